@@ -1,0 +1,44 @@
+"""Shared pytest fixtures. Run the suite through scripts/test, which sets up and sources scripts/env.sh."""
+import os
+import sys
+from pathlib import Path
+
+import pytest
+
+TESTS_DIR = Path(__file__).resolve().parent
+REPO_ROOT = TESTS_DIR.parent
+sys.path.insert(0, str(TESTS_DIR))
+
+from roslab import RosMaster  # noqa: E402  (needs the sys.path entry above)
+
+
+def pytest_configure(config):
+    if "ROS_PACKAGE_PATH" not in os.environ or "catkin_ws" not in os.environ.get("CMAKE_PREFIX_PATH", ""):
+        raise pytest.UsageError("not a ROS terminal for this workspace: run scripts/test, or "
+                                "`source scripts/env.sh` first")
+
+
+@pytest.fixture(scope="module")
+def ros_master(tmp_path_factory, monkeypatch_module):
+    """A private roscore on a free port for this test module; every process started through it is ended
+    when the module's tests are done. The test process's own ROS_MASTER_URI points at it too, so
+    rospy.ServiceProxy calls (which need no init_node) reach it."""
+    master = RosMaster(tmp_path_factory.mktemp("ros"))
+    monkeypatch_module.setenv("ROS_MASTER_URI", master.uri)
+    monkeypatch_module.setenv("ROS_HOSTNAME", "localhost")
+    try:
+        yield master
+    finally:
+        master.shutdown()
+
+
+@pytest.fixture(scope="module")
+def monkeypatch_module():
+    with pytest.MonkeyPatch.context() as patch:
+        yield patch
+
+
+@pytest.fixture(scope="module")
+def probe(ros_master):
+    """A probe node (see roslab/probe_node.py) on the module's master."""
+    return ros_master.probe()

@@ -1,0 +1,83 @@
+"""TopicProbe: the test's eyes and hands on topics, through the probe node (see probe_node.py)."""
+import json
+import select
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from roslab.waiting import wait_until
+
+PROBE_NODE = Path(__file__).with_name("probe_node.py")
+
+
+class ProbeError(RuntimeError):
+    """The probe node could not do what the test asked; the text is the node's error."""
+
+
+class TopicProbe:
+    """A rospy node in a child process: subscribe, collect messages with their arrival times, publish.
+
+    Create it through `RosMaster.probe()`, which ends it with the master's other processes.
+    """
+
+    def __init__(self, master, ready_timeout_s=30.0):
+        self._process = subprocess.Popen([sys.executable, str(PROBE_NODE)], env=master.env,
+                                         stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True,
+                                         stderr=open(master.workdir / "probe.log", "w"), start_new_session=True)
+        first = self._read_reply(ready_timeout_s)
+        if not first.get("ready"):
+            raise ProbeError("probe node did not start: {}".format(first))
+
+    def _read_reply(self, timeout_s):
+        readable, _, _ = select.select([self._process.stdout], [], [], timeout_s)
+        if not readable:
+            raise ProbeError("probe node did not answer within {} s".format(timeout_s))
+        line = self._process.stdout.readline()
+        if not line:
+            raise ProbeError("probe node exited (code {})".format(self._process.poll()))
+        return json.loads(line)
+
+    def _ask(self, op, **args):
+        self._process.stdin.write(json.dumps(dict(args, op=op)) + "\n")
+        self._process.stdin.flush()
+        reply = self._read_reply(60)
+        if not reply.pop("ok"):
+            raise ProbeError(reply["error"])
+        return reply
+
+    def subscribe(self, topic, msg_type):
+        self._ask("subscribe", topic=topic, type=msg_type)
+
+    def take(self, topic):
+        """Messages received on `topic` since the last take: [{"wall", "ros", "msg"}, ...], oldest first."""
+        return self._ask("take", topic=topic)["messages"]
+
+    def collect(self, topic, duration_s):
+        """Messages received during the next `duration_s` wall seconds (earlier ones are discarded)."""
+        self.take(topic)
+        time.sleep(duration_s)
+        return self.take(topic)
+
+    def wait_for_message(self, topic, timeout_s=20.0, predicate=lambda msg: True):
+        """The first message on `topic` (subscribed already) satisfying `predicate`, as a plain dict."""
+        def matching():
+            return next((entry["msg"] for entry in self.take(topic) if predicate(entry["msg"])), None)
+        return wait_until(matching, timeout_s, "a matching message on " + topic, interval_s=0.1)
+
+    def publish(self, topic, msg_type, msg, wait_s=5.0):
+        """Publish one message given as a dict (waits up to `wait_s` for a subscriber to connect first)."""
+        return self._ask("publish", topic=topic, type=msg_type, msg=msg, wait_s=wait_s)["subscribers"]
+
+    def now(self):
+        """The probe's rospy time in seconds (simulated when /use_sim_time was set before it started)."""
+        return self._ask("now")["now"]
+
+    def stop(self):
+        if self._process.poll() is None:
+            self._process.stdin.close()
+            try:
+                self._process.wait(timeout=5)
+            except subprocess.TimeoutExpired:
+                self._process.kill()
+                self._process.wait()

@@ -1,0 +1,102 @@
+"""The probe node: a rospy node in its own process that a test drives over stdin/stdout, one JSON object per
+line. It exists because rospy allows one init_node per process while each test module has its own master.
+
+Requests:  {"op": "subscribe", "topic": t, "type": "pkg/Msg"}            -> {"ok": true}
+           {"op": "take", "topic": t}  (and clears the buffer)           -> {"ok": true, "messages": [...]}
+           {"op": "publish", "topic": t, "type": "pkg/Msg", "msg": {...}, "wait_s": 5}  -> {"ok": true}
+           {"op": "now"}                                                 -> {"ok": true, "now": ros seconds}
+Each message comes back as {"wall": time.time(), "ros": rospy time (sim time when /use_sim_time), "msg": dict}.
+Errors come back as {"ok": false, "error": text}.
+"""
+import json
+import math
+import sys
+import threading
+import time
+
+import genpy
+import roslib.message
+import rospy
+
+
+def to_plain(value):
+    """A message as JSON-able plain data: dicts of fields, lists, seconds for Time/Duration, str for inf/nan."""
+    if isinstance(value, (genpy.Time, genpy.Duration)):
+        return value.to_sec()
+    if isinstance(value, genpy.Message):
+        return {slot: to_plain(getattr(value, slot)) for slot in value.__slots__}
+    if isinstance(value, (list, tuple)):
+        return [to_plain(item) for item in value]
+    if isinstance(value, bytes):
+        return list(value)
+    if isinstance(value, float) and not math.isfinite(value):
+        return repr(value)
+    return value
+
+
+class Probe:
+    def __init__(self):
+        self._lock = threading.Lock()
+        self._buffers = {}
+        self._subscribers = {}
+        self._publishers = {}
+
+    def subscribe(self, topic, type):
+        msg_class = self._message_class(type)
+        with self._lock:
+            if topic not in self._subscribers:
+                self._buffers[topic] = []
+                self._subscribers[topic] = rospy.Subscriber(topic, msg_class, self._record, callback_args=topic,
+                                                            queue_size=1000)
+        return {}
+
+    def _record(self, msg, topic):
+        entry = {"wall": time.time(), "ros": rospy.get_rostime().to_sec(), "msg": to_plain(msg)}
+        with self._lock:
+            self._buffers[topic].append(entry)
+
+    def take(self, topic):
+        with self._lock:
+            messages, self._buffers[topic] = self._buffers[topic], []
+        return {"messages": messages}
+
+    def publish(self, topic, type, msg, wait_s=5.0):
+        if topic not in self._publishers:
+            self._publishers[topic] = rospy.Publisher(topic, self._message_class(type), queue_size=10)
+        publisher = self._publishers[topic]
+        deadline = time.monotonic() + wait_s
+        while publisher.get_num_connections() == 0 and time.monotonic() < deadline:
+            time.sleep(0.02)
+        message = publisher.data_class()
+        genpy.message.fill_message_args(message, [msg])
+        publisher.publish(message)
+        return {"subscribers": publisher.get_num_connections()}
+
+    def now(self):
+        return {"now": rospy.get_rostime().to_sec()}
+
+    @staticmethod
+    def _message_class(type_name):
+        msg_class = roslib.message.get_message_class(type_name)
+        if msg_class is None:
+            raise ValueError("unknown message type " + type_name)
+        return msg_class
+
+
+def main():
+    rospy.init_node("roslab_probe", anonymous=True, disable_signals=True)
+    probe = Probe()
+    print(json.dumps({"ok": True, "ready": True}), flush=True)
+    for line in sys.stdin:
+        request = json.loads(line)
+        op = request.pop("op")
+        try:
+            reply = dict(getattr(probe, op)(**request), ok=True)
+        except Exception as error:  # reported to the test, which raises it there
+            reply = {"ok": False, "error": "{}: {}".format(type(error).__name__, error)}
+        print(json.dumps(reply), flush=True)
+    rospy.signal_shutdown("probe input closed")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,45 @@
+"""Waiting with timeouts on the graph of a given master, without being a node (plain master API calls)."""
+import time
+
+import rosgraph
+
+
+class WaitTimeout(AssertionError):
+    """The condition did not become true in time; the message says what was awaited."""
+
+
+def wait_until(predicate, timeout_s, what, interval_s=0.05):
+    """Poll `predicate()` until it returns a truthy value (returned) or `timeout_s` wall seconds pass."""
+    deadline = time.monotonic() + timeout_s
+    while True:
+        value = predicate()
+        if value:
+            return value
+        if time.monotonic() > deadline:
+            raise WaitTimeout("timed out after {:.1f} s waiting for {}".format(timeout_s, what))
+        time.sleep(interval_s)
+
+
+def _master(master_uri):
+    return rosgraph.Master("/roslab_test", master_uri=master_uri)
+
+
+def wait_for_service(master_uri, name, timeout_s=20.0):
+    """Wait until `name` is registered with the master; returns its rosrpc URI."""
+    def lookup():
+        try:
+            return _master(master_uri).lookupService(name)
+        except (rosgraph.MasterError, OSError):
+            return None
+    return wait_until(lookup, timeout_s, "service " + name)
+
+
+def wait_for_topic(master_uri, name, timeout_s=20.0):
+    """Wait until some node publishes `name`; returns its type as the master knows it."""
+    def lookup():
+        try:
+            topics = dict(_master(master_uri).getPublishedTopics("/"))
+        except (rosgraph.MasterError, OSError):
+            return None
+        return topics.get(name)
+    return wait_until(lookup, timeout_s, "a publisher on " + name)
