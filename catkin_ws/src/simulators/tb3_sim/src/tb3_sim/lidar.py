@@ -1,0 +1,132 @@
+"""The LDS-01 LiDAR as Gazebo simulates it (spec §2), with vectorised numpy ray casting.
+
+Gazebo conventions kept on purpose:
+- 360 beams from angle_min 0 to angle_max 6.28319 rad, both inclusive, so angle_increment = 6.28319 / 359
+  (not 2*pi/360); index 0 points straight ahead (+x of base_scan), angles grow CCW (index ~90 is left,
+  ~270 right) and index 359 points ahead again;
+- each ray starts 0.12 m from the scan origin: anything closer is not seen and the beam reports what lies
+  behind it; a beam with no hit, or a hit at or beyond 3.5 m, reports +inf (never range_max, never 0);
+- Gaussian noise (sigma 0.01 m) only on finite readings, then clamped to [0.12, 3.5];
+- only the horizontal plane at 0.132 m is scanned; the caller leaves out objects lower than that.
+The noise comes from a seeded numpy Generator, so the same seed and the same motion give identical scans.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+LIDAR_SAMPLES = 360
+LIDAR_ANGLE_MIN_RAD = 0.0
+LIDAR_ANGLE_MAX_RAD = 6.28319
+LIDAR_ANGLE_INCREMENT_RAD = (LIDAR_ANGLE_MAX_RAD - LIDAR_ANGLE_MIN_RAD) / (LIDAR_SAMPLES - 1)
+LIDAR_RANGE_MIN_M = 0.12
+LIDAR_RANGE_MAX_M = 3.5
+LIDAR_NOISE_STDDEV_M = 0.01
+LIDAR_UPDATE_RATE_HZ = 5.0
+LIDAR_FRAME_ID = "base_scan"
+
+# Below this |cross product| a ray and a segment count as parallel (no hit).
+_PARALLEL_EPSILON = 1e-12
+
+
+@dataclass(frozen=True)
+class ScanResult:
+    """One sweep, with every field a sensor_msgs/LaserScan needs besides the header stamp source.
+
+    `ranges` is a float32 array of LIDAR_SAMPLES distances in metres from the base_scan origin (+inf where
+    nothing is seen); `time_s` is the simulated time of the measurement. time_increment and scan_time are 0,
+    as Gazebo's plugin hard-codes them; intensities are all zero (the node fills them).
+    """
+
+    ranges: np.ndarray
+    time_s: float
+    frame_id: str = LIDAR_FRAME_ID
+    angle_min: float = LIDAR_ANGLE_MIN_RAD
+    angle_max: float = LIDAR_ANGLE_MAX_RAD
+    angle_increment: float = LIDAR_ANGLE_INCREMENT_RAD
+    range_min: float = LIDAR_RANGE_MIN_M
+    range_max: float = LIDAR_RANGE_MAX_M
+    time_increment: float = 0.0
+    scan_time: float = 0.0
+
+
+def beam_angles():
+    """Beam angles in rad relative to base_scan's +x, CCW, index 0 first."""
+    return LIDAR_ANGLE_MIN_RAD + LIDAR_ANGLE_INCREMENT_RAD * np.arange(LIDAR_SAMPLES)
+
+
+def cast_rays(origin, directions, obstacles, min_range, max_range):
+    """Distance along each ray to the nearest obstacle in [min_range, max_range), or +inf.
+
+    `origin` is (x, y) and `directions` an (N, 2) array of unit vectors, world frame; returns an (N,) float64
+    array. Segments are two-sided; a circle is hit where the ray enters it or, if the ray starts inside, where
+    it leaves. Obstacles wholly beyond max_range are dropped before the N x M work.
+    """
+    ox, oy = origin
+    distances = np.full(len(directions), np.inf)
+    dx, dy = directions[:, 0:1], directions[:, 1:2]
+    segments = _segments_within(obstacles.segments, ox, oy, max_range)
+    if len(segments):
+        ax, ay = segments[:, 0] - ox, segments[:, 1] - oy
+        ex, ey = segments[:, 2] - segments[:, 0], segments[:, 3] - segments[:, 1]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            denom = dx * ey - dy * ex
+            t = (ax * ey - ay * ex) / denom
+            s = (ax * dy - ay * dx) / denom
+        hit = (np.abs(denom) > _PARALLEL_EPSILON) & (s >= 0.0) & (s <= 1.0) & (t >= min_range)
+        distances = np.minimum(distances, np.where(hit, t, np.inf).min(axis=1))
+    circles = obstacles.circles
+    if len(circles):
+        vx, vy, r = ox - circles[:, 0], oy - circles[:, 1], circles[:, 2]
+        near = np.hypot(vx, vy) - r < max_range
+        vx, vy, r = vx[near], vy[near], r[near]
+        if len(r):
+            b = dx * vx + dy * vy
+            disc = b * b - (vx * vx + vy * vy - r * r)
+            root = np.sqrt(np.maximum(disc, 0.0))
+            t_in, t_out = -b - root, -b + root
+            t = np.where(t_in >= min_range, t_in, np.where(t_out >= min_range, t_out, np.inf))
+            distances = np.minimum(distances, np.where(disc >= 0.0, t, np.inf).min(axis=1))
+    distances[distances >= max_range] = np.inf
+    return distances
+
+
+def _segments_within(segments, ox, oy, max_range):
+    """The rows of `segments` whose closest point to (ox, oy) is nearer than max_range."""
+    if not len(segments):
+        return segments
+    ax, ay = segments[:, 0] - ox, segments[:, 1] - oy
+    ex, ey = segments[:, 2] - segments[:, 0], segments[:, 3] - segments[:, 1]
+    along = np.clip(-(ax * ex + ay * ey) / np.maximum(ex * ex + ey * ey, _PARALLEL_EPSILON), 0.0, 1.0)
+    return segments[np.hypot(ax + along * ex, ay + along * ey) < max_range]
+
+
+class Lidar:
+    """A 360-beam scanner with Gazebo's conventions and its own seeded noise stream.
+
+    `seed` (int) makes the noise reproducible; `noise_stddev_m` defaults to the xacro's 0.01 m (0 disables it).
+    """
+
+    def __init__(self, seed=0, noise_stddev_m=LIDAR_NOISE_STDDEV_M):
+        self.noise_stddev_m = noise_stddev_m
+        self._local_directions = np.column_stack((np.cos(beam_angles()), np.sin(beam_angles())))
+        self.reseed(seed)
+
+    def reseed(self, seed):
+        """Restart the noise stream from `seed`."""
+        self._rng = np.random.default_rng(seed)
+
+    def scan(self, origin, obstacles, time_s):
+        """Sweep from `origin` (Pose2D of base_scan in the world) against `obstacles`; return a ScanResult.
+
+        Draws LIDAR_SAMPLES noise values per sweep whatever is hit, so the noise stream stays aligned
+        between runs that see different things.
+        """
+        c, s = np.cos(origin.yaw), np.sin(origin.yaw)
+        local = self._local_directions
+        directions = np.column_stack((c * local[:, 0] - s * local[:, 1], s * local[:, 0] + c * local[:, 1]))
+        ranges = cast_rays((origin.x, origin.y), directions, obstacles, LIDAR_RANGE_MIN_M, LIDAR_RANGE_MAX_M)
+        noise = self._rng.normal(0.0, self.noise_stddev_m, LIDAR_SAMPLES)
+        finite = np.isfinite(ranges)
+        ranges[finite] = np.clip(ranges[finite] + noise[finite], LIDAR_RANGE_MIN_M, LIDAR_RANGE_MAX_M)
+        return ScanResult(ranges.astype(np.float32), float(time_s))
