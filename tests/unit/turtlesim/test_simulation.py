@@ -18,7 +18,8 @@ def test_start_logs_and_spawns_turtle1(make_sim, log):
     assert sim.names == ['turtle1']
     assert log.events == [
         (LogLevel.INFO, 'Starting turtlesim with node name /sim'),
-        (LogLevel.INFO, 'Spawning turtle [turtle1] at x=[5.544445], y=[5.544445], theta=[0.000000]'),
+        (LogLevel.INFO,
+         'Spawning turtle [turtle1] at x=[5.544445], y=[5.544445], theta=[0.000000]'),
     ]
 
 

@@ -66,7 +66,7 @@ def test_timeout_is_strictly_more_than_one_second_of_now(canvas):
     assert turtle.update(DT, 11.0 + 1e-6, canvas).pose.linear_velocity == 0.0
 
 
-def test_new_turtle_ignores_nothing_but_is_stopped_until_a_command(canvas):
+def test_new_turtle_is_stopped_until_a_command(canvas):
     turtle = Turtle(WORLD_CENTRE, WORLD_CENTRE, 0.0)
     assert turtle.update(DT, 0.5, canvas).pose.linear_velocity == 0.0
 
