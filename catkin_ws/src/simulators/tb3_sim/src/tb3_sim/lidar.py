@@ -25,10 +25,6 @@ LIDAR_NOISE_STDDEV_M = 0.01
 LIDAR_UPDATE_RATE_HZ = 5.0
 LIDAR_FRAME_ID = "base_scan"
 
-# Below this |cross product| a ray and a segment count as parallel (no hit).
-_PARALLEL_EPSILON = 1e-12
-
-
 @dataclass(frozen=True)
 class ScanResult:
     """One sweep, with every field a sensor_msgs/LaserScan needs besides the header stamp source.
@@ -55,50 +51,41 @@ def beam_angles():
     return LIDAR_ANGLE_MIN_RAD + LIDAR_ANGLE_INCREMENT_RAD * np.arange(LIDAR_SAMPLES)
 
 
-def cast_rays(origin, directions, obstacles, min_range, max_range):
+def cast_rays(origin, angles, obstacles, min_range, max_range):
     """Distance along each ray to the nearest obstacle in [min_range, max_range), or +inf.
 
-    `origin` is (x, y) and `directions` an (N, 2) array of unit vectors, world frame; returns an (N,) float64
-    array. Segments are two-sided; a circle is hit where the ray enters it or, if the ray starts inside, where
-    it leaves. Obstacles wholly beyond max_range are dropped before the N x M work.
+    `origin` is (x, y) and `angles` an (N,) array of ray directions in rad, world frame; returns an (N,)
+    float64 array. The work is N x (obstacles left after culling): anything wholly beyond max_range, and
+    solid edges that face away from the origin, are dropped first. Parallel rays and misses become NaN or inf
+    in the intermediate arrays, and every comparison with NaN is false, so they need no special case.
     """
     ox, oy = origin
-    distances = np.full(len(directions), np.inf)
-    dx, dy = directions[:, 0:1], directions[:, 1:2]
-    segments = _segments_within(obstacles.segments, ox, oy, max_range)
-    if len(segments):
-        ax, ay = segments[:, 0] - ox, segments[:, 1] - oy
-        ex, ey = segments[:, 2] - segments[:, 0], segments[:, 3] - segments[:, 1]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            denom = dx * ey - dy * ex
-            t = (ax * ey - ay * ex) / denom
-            s = (ax * dy - ay * dx) / denom
-        hit = (np.abs(denom) > _PARALLEL_EPSILON) & (s >= 0.0) & (s <= 1.0) & (t >= min_range)
-        distances = np.minimum(distances, np.where(hit, t, np.inf).min(axis=1))
-    circles = obstacles.circles
-    if len(circles):
-        vx, vy, r = ox - circles[:, 0], oy - circles[:, 1], circles[:, 2]
-        near = np.hypot(vx, vy) - r < max_range
-        vx, vy, r = vx[near], vy[near], r[near]
-        if len(r):
+    dx, dy = np.cos(angles)[:, None], np.sin(angles)[:, None]
+    distances = np.full(len(angles), np.inf)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lines = obstacles.lines
+        ax, ay = lines[:, 0] - ox, lines[:, 1] - oy
+        ex, ey = lines[:, 2] - lines[:, 0], lines[:, 3] - lines[:, 1]
+        along = np.clip(-(ax * ex + ay * ey) / (ex * ex + ey * ey), 0.0, 1.0)
+        keep = np.hypot(ax + along * ex, ay + along * ey) < max_range
+        keep &= ~obstacles.solid | (ax * ey - ay * ex < 0.0)
+        if keep.any():
+            ax, ay, ex, ey = ax[keep], ay[keep], ex[keep], ey[keep]
+            inverse = 1.0 / (dx * ey - dy * ex)
+            t = (ax * ey - ay * ex) * inverse
+            s = (ax * dy - ay * dx) * inverse
+            t[~((s >= 0.0) & (s <= 1.0) & (t >= min_range))] = np.inf
+            np.minimum(distances, t.min(axis=1), out=distances)
+        vx, vy, r = ox - obstacles.circles[:, 0], oy - obstacles.circles[:, 1], obstacles.circles[:, 2]
+        keep = np.hypot(vx, vy) - r < max_range
+        if keep.any():
+            vx, vy, r = vx[keep], vy[keep], r[keep]
             b = dx * vx + dy * vy
-            disc = b * b - (vx * vx + vy * vy - r * r)
-            root = np.sqrt(np.maximum(disc, 0.0))
-            t_in, t_out = -b - root, -b + root
-            t = np.where(t_in >= min_range, t_in, np.where(t_out >= min_range, t_out, np.inf))
-            distances = np.minimum(distances, np.where(disc >= 0.0, t, np.inf).min(axis=1))
+            t = -b - np.sqrt(b * b - (vx * vx + vy * vy - r * r))
+            t[~(t >= min_range)] = np.inf
+            np.minimum(distances, t.min(axis=1), out=distances)
     distances[distances >= max_range] = np.inf
     return distances
-
-
-def _segments_within(segments, ox, oy, max_range):
-    """The rows of `segments` whose closest point to (ox, oy) is nearer than max_range."""
-    if not len(segments):
-        return segments
-    ax, ay = segments[:, 0] - ox, segments[:, 1] - oy
-    ex, ey = segments[:, 2] - segments[:, 0], segments[:, 3] - segments[:, 1]
-    along = np.clip(-(ax * ex + ay * ey) / np.maximum(ex * ex + ey * ey, _PARALLEL_EPSILON), 0.0, 1.0)
-    return segments[np.hypot(ax + along * ex, ay + along * ey) < max_range]
 
 
 class Lidar:
@@ -109,7 +96,7 @@ class Lidar:
 
     def __init__(self, seed=0, noise_stddev_m=LIDAR_NOISE_STDDEV_M):
         self.noise_stddev_m = noise_stddev_m
-        self._local_directions = np.column_stack((np.cos(beam_angles()), np.sin(beam_angles())))
+        self._angles = beam_angles()
         self.reseed(seed)
 
     def reseed(self, seed):
@@ -122,10 +109,8 @@ class Lidar:
         Draws LIDAR_SAMPLES noise values per sweep whatever is hit, so the noise stream stays aligned
         between runs that see different things.
         """
-        c, s = np.cos(origin.yaw), np.sin(origin.yaw)
-        local = self._local_directions
-        directions = np.column_stack((c * local[:, 0] - s * local[:, 1], s * local[:, 0] + c * local[:, 1]))
-        ranges = cast_rays((origin.x, origin.y), directions, obstacles, LIDAR_RANGE_MIN_M, LIDAR_RANGE_MAX_M)
+        ranges = cast_rays((origin.x, origin.y), self._angles + origin.yaw, obstacles,
+                           LIDAR_RANGE_MIN_M, LIDAR_RANGE_MAX_M)
         noise = self._rng.normal(0.0, self.noise_stddev_m, LIDAR_SAMPLES)
         finite = np.isfinite(ranges)
         ranges[finite] = np.clip(ranges[finite] + noise[finite], LIDAR_RANGE_MIN_M, LIDAR_RANGE_MAX_M)
