@@ -241,3 +241,10 @@ def test_robot_start_in_turtlebot3_world_is_clear_and_sees_the_wall_behind():
     world.robot.set_command(0.26, 0.0)
     world.run(1.0)
     assert world.robot.pose.x == pytest.approx(-2.0 + 0.26 - 0.5 * 0.26 ** 2, abs=0.01)
+
+
+def test_optional_clamp_to_the_waffle_limits():
+    world = World(EMPTY, clamp_command=True)
+    world.robot.set_command(1.0, 0.0)
+    world.run(2.0)
+    assert world.robot.twist_body.vx == pytest.approx(0.26, abs=1e-5)

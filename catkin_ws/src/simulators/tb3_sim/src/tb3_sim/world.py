@@ -15,6 +15,7 @@ from typing import NamedTuple
 
 from Box2D import b2
 
+from tb3_sim.diff_drive import DiffDrive
 from tb3_sim.errors import DuplicateModelError, OverlapError, ProtectedModelError, UnknownModelError
 from tb3_sim.geometry import Pose2D, Twist2D
 from tb3_sim.lidar import Lidar
@@ -46,12 +47,13 @@ class World:
 
     Arguments: `description` (a WorldDescription), `robot_pose` (spawn Pose2D of base_footprint, world frame),
     `robot_name` (model name of the robot, e.g. `turtlebot3_waffle`), `seed` (LiDAR noise), `step_s` (physics
-    step, s), `lidar_sees_low_objects` (if True the scan also sees models lower than the 0.132 m scan plane).
+    step, s), `lidar_sees_low_objects` (if True the scan also sees models lower than the 0.132 m scan plane),
+    `clamp_command` (if True commands are clamped to the Waffle's 0.26 m/s and 1.82 rad/s; Gazebo does not).
     Errors are SimError subclasses: DuplicateModelError, UnknownModelError, OverlapError, ProtectedModelError.
     """
 
     def __init__(self, description, robot_pose=Pose2D(), robot_name=WAFFLE_MODEL_NAME, seed=0,
-                 step_s=PHYSICS_STEP_S, lidar_sees_low_objects=False):
+                 step_s=PHYSICS_STEP_S, lidar_sees_low_objects=False, clamp_command=False):
         self.description = description
         self.step_s = step_s
         self.seed = seed
@@ -72,7 +74,7 @@ class World:
             self._reserved.add(description.static_model)
         if robot_name in self._reserved or robot_name in self._models:
             raise DuplicateModelError(f"robot name '{robot_name}' is already used by the world")
-        self.robot = Robot(self._b2world, robot_name, robot_pose)
+        self.robot = Robot(self._b2world, robot_name, robot_pose, DiffDrive(clamp=clamp_command))
 
     @property
     def time_s(self):
@@ -105,7 +107,7 @@ class World:
         return self.lidar.scan(self.robot.scan_pose(), obstacles, self.time_s)
 
     def obstacles(self):
-        """Everything the LiDAR sees now (an `obstacles.Obstacles`), e.g. for a view or markers."""
+        """All geometry now, including models too low for the LiDAR (an `obstacles.Obstacles`), for a view."""
         obstacles = self._static_obstacles
         for model in self._models.values():
             obstacles = obstacles + model_obstacles(model.spec.shape, model.pose)
