@@ -1,0 +1,68 @@
+"""The approach controller: drive straight ahead and stop `distance` metres from the closest object ahead.
+
+Between LiDAR sweeps (5 Hz) the distance is dead-reckoned from odometry (30 Hz): the last measured distance
+minus how far the robot has travelled since that sweep. The stop is commanded early by the braking distance
+v^2 / (2 * DECELERATION_MPS2), because a TurtleBot3 does not stop instantly (the Gazebo drive ramps the wheel
+speed at about 1 m/s^2). Safety limit: when nothing is seen ahead, the robot drives at most SAFETY_TRAVEL_M
+(the LiDAR's 3.5 m range: anything it could have driven into would have been seen by then) and stops.
+Pure logic: the caller feeds sweeps and odometry and publishes the velocity it returns.
+"""
+import enum
+from typing import NamedTuple, Optional
+
+DECELERATION_MPS2 = 1.0
+SAFETY_TRAVEL_M = 3.5
+
+
+class Outcome(enum.Enum):
+    DRIVING = "driving"
+    ARRIVED = "arrived"
+    ALREADY_THERE = "already_there"
+    NOTHING_AHEAD = "nothing_ahead"
+
+
+class Step(NamedTuple):
+    """What to do now: drive at `velocity` m/s (0 = stop); `outcome` is DRIVING until the approach ends."""
+
+    velocity: float
+    outcome: Outcome
+
+
+class ApproachController:
+    """One approach. Call `on_sweep` for every LiDAR sweep and `on_odometry` for every odometry update."""
+
+    def __init__(self, plan):
+        self.plan = plan
+        self._measured: Optional[float] = None
+        self._travelled_at_sweep = 0.0
+        self._travelled = 0.0
+        self._sweeps = 0
+        self.outcome = Outcome.DRIVING
+
+    def on_sweep(self, closest_distance: Optional[float]):
+        """A new sweep: the closest object ahead in metres, or None when nothing is seen ahead."""
+        self._sweeps += 1
+        self._measured = closest_distance
+        self._travelled_at_sweep = self._travelled
+        if self._sweeps == 1 and closest_distance is not None and closest_distance <= self.plan.distance:
+            self.outcome = Outcome.ALREADY_THERE
+
+    def on_odometry(self, travelled_m: float, speed_mps: float) -> Step:
+        """Distance driven since the start (m) and current forward speed (m/s) -> the command to publish."""
+        self._travelled = travelled_m
+        if self.outcome is not Outcome.DRIVING or self._sweeps == 0:
+            return Step(0.0, self.outcome)
+        braking = max(speed_mps, 0.0) ** 2 / (2.0 * DECELERATION_MPS2)
+        estimate = self.estimated_distance()
+        if estimate is not None and estimate - braking <= self.plan.distance:
+            self.outcome = Outcome.ARRIVED
+        elif estimate is None and travelled_m + braking >= SAFETY_TRAVEL_M:
+            self.outcome = Outcome.NOTHING_AHEAD
+        velocity = self.plan.velocity if self.outcome is Outcome.DRIVING else 0.0
+        return Step(velocity, self.outcome)
+
+    def estimated_distance(self) -> Optional[float]:
+        """The closest object ahead now: last sweep's distance minus the travel since it, or None."""
+        if self._measured is None:
+            return None
+        return self._measured - (self._travelled - self._travelled_at_sweep)
