@@ -13,7 +13,7 @@ from tuos_msgs.srv import Approach, ApproachResponse
 
 from week4_services.approach import ApproachController, Outcome
 from week4_services.requests import InvalidRequest, approach
-from week4_services.ros_bridge import Robot, RobotError
+from tb3_client.robot import Robot, RobotError
 
 NODE_NAME = "approach_service_server"
 SERVICE_NAME = "approach_service"

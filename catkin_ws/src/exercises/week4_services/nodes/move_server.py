@@ -7,7 +7,7 @@ request_signal false: do nothing and reply False, telling the caller to send tru
 import rospy
 from tuos_msgs.srv import SetBool, SetBoolResponse
 
-from week4_services.ros_bridge import Robot, RobotError
+from tb3_client.robot import Robot, RobotError
 
 NODE_NAME = "move_service_server"
 SERVICE_NAME = "move_service"

@@ -11,7 +11,7 @@ from tuos_msgs.srv import TimedMovement, TimedMovementResponse
 
 from week4_services.requests import (DEFAULT_ANGULAR_SPEED_RADPS, DEFAULT_LINEAR_SPEED_MPS, InvalidRequest,
                                      timed_movement)
-from week4_services.ros_bridge import Robot, RobotError
+from tb3_client.robot import Robot, RobotError
 
 NODE_NAME = "timed_move_service_server"
 SERVICE_NAME = "timed_move_service"

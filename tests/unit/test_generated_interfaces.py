@@ -1,5 +1,6 @@
-"""Generated classes of the simulator packages carry the original interfaces: turtlesim and turtle_actionlib
-md5sums from ../shared/specs/turtlesim.md §2 and §4, gazebo_msgs field lists from tb3_sim.md §5."""
+"""Generated classes carry the original interfaces: turtlesim and turtle_actionlib md5sums from
+../shared/specs/turtlesim.md §2 and §4, the ROS 2 Services unit ports from interfaces.md, gazebo_msgs field
+lists from tb3_sim.md §5."""
 import importlib
 
 import pytest
@@ -23,6 +24,12 @@ MD5SUMS = {
     "turtle_actionlib.msg.ShapeResult": "b06c6e2225f820dbc644270387cd1a7c",
     "turtle_actionlib.msg.ShapeFeedback": "d41d8cd98f00b204e9800998ecf8427e",
     "turtle_actionlib.msg.Velocity": "9d5c2dcd348ac8f76ce2a4307bd63a13",
+    "std_srvs.srv.Empty": "d41d8cd98f00b204e9800998ecf8427e",
+    "std_srvs.srv.SetBool": "09fb03525b03e7ea1fd3992bafd87e16",
+    "custom_interfaces.srv.MyCustomServiceMessage": "0f1c913663b55d50624c71265d8df6a2",
+    "custom_interfaces.srv.Move": "84da34b925980618a0a153c1dcc2b379",
+    "custom_interfaces.srv.StringServiceMessage": "eacb96936978c535fc698b2654a80bac",
+    "services_quiz_srv.srv.Turn": "79912f95557af6cf3d55d2b6458d92f2",
 }
 
 GAZEBO_FIELDS = {

@@ -1,4 +1,4 @@
-"""The TurtleBot3 as the Week 4 servers see it: /cmd_vel out, /odom and /scan in, with a watchdog.
+"""The TurtleBot3 as service servers see it: /cmd_vel out, /odom and /scan in, with a watchdog.
 
 Timing is rospy time (simulated under /use_sim_time). Waiting is done in short wall-clock slices so that a
 simulator that dies (its /clock and /odom stop) is noticed within STALE_AFTER_WALL_S instead of hanging the
@@ -14,7 +14,7 @@ from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
 
-from week4_services.scan_ahead import closest_ahead
+from tb3_client.scan_ahead import closest_ahead
 
 STALE_AFTER_WALL_S = 1.0      # no /odom (or /scan while one is needed) for this long: the robot is gone
 WAIT_SLICE_WALL_S = 0.01

@@ -1,4 +1,4 @@
-"""The /scan helper the Week 4 servers share: how far away is the closest object ahead, and at what angle.
+"""The /scan helper the course servers share: how far away is the closest object ahead, and at what angle.
 
 Conventions are Gazebo's TurtleBot3 LiDAR (see tb3_sim): index 0 points straight ahead and angles grow
 counter-clockwise from angle_min, so "ahead" is the beams within +-ARC_HALF_WIDTH_DEG of 0, wrapping around

@@ -3,7 +3,7 @@ import math
 
 import pytest
 
-from week4_services.scan_ahead import arc_indices, beam_angle_deg, closest_ahead
+from tb3_client.scan_ahead import arc_indices, beam_angle_deg, closest_ahead
 
 INCREMENT = 6.28319 / 359
 INF = float("inf")
