@@ -42,3 +42,7 @@ class ProtectedModelError(SimError):
 
 class InvalidCommandError(SimError):
     """A velocity command is not a finite number or is beyond the sanity limits."""
+
+
+class ConfigError(SimError):
+    """A node parameter has a bad type or value, or names a world that does not exist."""

@@ -1,0 +1,190 @@
+"""The ROS 1 node around the simulation core: Gazebo's TurtleBot3 Waffle topics, /clock and /gazebo/* services.
+
+Node name `gazebo` (as gzserver's), so its private services are /gazebo/reset_world and so on.
+
+Subscribes: `cmd_vel` (geometry_msgs/Twist, queue 1; linear.x and angular.z held until the next message, no
+  timeout; NaN, inf or absurd values are ignored with a throttled warning and the previous command is kept);
+  /gazebo/set_model_state (gazebo_msgs/ModelState).
+Publishes: /clock every physics step (5 ms of sim time); `odom` (nav_msgs/Odometry), /tf odom -> base_footprint
+  and `joint_states` at 30 Hz; `scan` (sensor_msgs/LaserScan) at 5 Hz; `imu` (sensor_msgs/Imu) at 100 Hz;
+  /gazebo/model_states at 100 Hz (the last three only while subscribed); /tf_static (latched) with the Waffle's
+  fixed joints unless ~publish_static_tf is false. All rates are in simulated time (see sensor_outputs).
+Services: /gazebo/{reset_world, reset_simulation, pause_physics, unpause_physics, spawn_sdf_model,
+  spawn_urdf_model, delete_model, get_model_state, set_model_state, get_world_properties} (see gazebo_api),
+  and ~snapshot (std_srvs/Empty): write a top-down PNG of the world to ~snapshot_path.
+Parameters: see tb3_sim.config (~world, ~x_pos, ~y_pos, ~yaw, ~robot_name, ~seed, ~real_time_factor,
+  ~lidar_sees_low_objects, ~clamp_command, ~paused, ~headless, ~snapshot_path, ~publish_static_tf).
+/use_sim_time is set to true before the node starts if it is absent, as gazebo_ros does.
+
+Threads: the main thread steps physics and publishes; rospy runs every callback in its own thread. One lock
+guards the world: callbacks change it only between two steps. Time: physics runs in simulated time; only the
+pacing of steps (`~real_time_factor`) uses the wall clock.
+"""
+
+import sys
+import threading
+import time
+from contextlib import contextmanager
+from pathlib import Path
+
+import rosgraph
+import rospkg
+import rospy
+from gazebo_msgs.msg import ModelStates
+from geometry_msgs.msg import Twist
+from nav_msgs.msg import Odometry
+from rosgraph_msgs.msg import Clock
+from sensor_msgs.msg import Imu, JointState, LaserScan
+from tf2_msgs.msg import TFMessage
+
+from tb3_sim import ros_messages
+from tb3_sim.config import config_from_params
+from tb3_sim.diff_drive import validate_command
+from tb3_sim.errors import SimError
+from tb3_sim.geometry import Pose2D
+from tb3_sim.pacing import Pacer
+from tb3_sim.robot_model import WAFFLE_STATIC_TRANSFORMS
+from tb3_sim.sensor_outputs import Publishers, SensorOutputs
+from tb3_sim.world import World
+from tb3_sim.world_file import load_world
+
+NODE_NAME = "gazebo"
+PACKAGE = "tb3_sim"
+USE_SIM_TIME_PARAM = "/use_sim_time"
+WARNING_THROTTLE_S = 5.0
+PAUSED_POLL_S = 0.05
+MASTER_RETRY_S = 1.0
+
+
+class SimNode:
+    """Owns the world, the lock around it, the pause flag and the publishing loop (`spin`)."""
+
+    def __init__(self, config, world):
+        self.config = config
+        self._world = world
+        self._lock = threading.Lock()
+        self._running = threading.Event()
+        if not config.paused:
+            self._running.set()
+        self._pacer = Pacer(config.real_time_factor)
+        self._outputs = SensorOutputs(Publishers(
+            clock=rospy.Publisher("/clock", Clock, queue_size=10),
+            odom=rospy.Publisher("odom", Odometry, queue_size=10),
+            tf=rospy.Publisher("/tf", TFMessage, queue_size=100),
+            joint_states=rospy.Publisher("joint_states", JointState, queue_size=10),
+            scan=rospy.Publisher("scan", LaserScan, queue_size=10),
+            imu=rospy.Publisher("imu", Imu, queue_size=10),
+            model_states=rospy.Publisher("~model_states", ModelStates, queue_size=10),
+        ))
+        if config.publish_static_tf:
+            self._static_tf = rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True)
+            self._static_tf.publish(ros_messages.static_tf_message(world.time_s, WAFFLE_STATIC_TRANSFORMS))
+        self._cmd_vel = rospy.Subscriber("cmd_vel", Twist, self._on_cmd_vel, queue_size=1)
+
+    @contextmanager
+    def locked_world(self):
+        """The world, for use between two physics steps (hold it briefly: physics waits)."""
+        with self._lock:
+            yield self._world
+
+    @property
+    def paused(self):
+        return not self._running.is_set()
+
+    def pause(self):
+        self._running.clear()
+
+    def unpause(self):
+        self._running.set()
+
+    def reset_world(self):
+        """Models and robot back to their initial poses, command zeroed; sim time keeps running."""
+        with self._lock:
+            self._world.reset_world()
+            self._outputs.forget_motion()
+
+    def reset_simulation(self):
+        """reset_world plus sim time back to 0 (/clock jumps back, as Gazebo's does)."""
+        with self._lock:
+            self._world.reset_simulation()
+            self._outputs.restart(self._world.time_s)
+
+    def teleported(self):
+        """Tell the sensors a model was moved by a service (call with the world locked)."""
+        self._outputs.forget_motion()
+
+    def _on_cmd_vel(self, message):
+        linear, angular = message.linear.x, message.angular.z
+        reason = validate_command(linear, angular)
+        if reason is not None:
+            rospy.logwarn_throttle(WARNING_THROTTLE_S, f"cmd_vel ignored: {reason}; keeping the previous command")
+            return
+        with self._lock:
+            self._world.robot.set_command(linear, angular)
+
+    def spin(self):
+        """Step, publish and pace until ROS shuts down."""
+        while not rospy.is_shutdown():
+            if not self._running.wait(PAUSED_POLL_S):
+                self._pacer.restart(self._world.time_s, time.monotonic())
+                continue
+            with self._lock:
+                now_s = self._world.step()
+                outgoing = self._outputs.collect(self._world)
+            for publisher, message in outgoing:
+                publisher.publish(message)
+            delay_s = self._pacer.delay(now_s, time.monotonic())
+            if delay_s:
+                time.sleep(delay_s)
+
+
+def worlds_dir():
+    """The shipped worlds folder of the tb3_sim package, found through the ROS package path."""
+    return Path(rospkg.RosPack().get_path(PACKAGE)) / "worlds"
+
+
+def ensure_use_sim_time():
+    """Set /use_sim_time to true if no one has set it, before this node's rospy time starts.
+
+    Waits for the master like rospy.init_node does, so `rosrun` before `roscore` just waits.
+    """
+    master = rosgraph.Master(NODE_NAME)
+    waiting = False
+    while True:
+        try:
+            if not master.hasParam(USE_SIM_TIME_PARAM):
+                master.setParam(USE_SIM_TIME_PARAM, True)
+            return
+        except OSError:
+            if not waiting:
+                print(f"tb3_sim: waiting for the ROS master at {rosgraph.get_master_uri()}", file=sys.stderr)
+                waiting = True
+            time.sleep(MASTER_RETRY_S)
+
+
+def build_world(config):
+    """The World the config describes; raises SimError (WorldFileError, ConfigError...) with a clear message."""
+    description = load_world(config.world_path)
+    return World(description, Pose2D(config.x_pos, config.y_pos, config.yaw), config.robot_name,
+                 seed=config.seed, lidar_sees_low_objects=config.lidar_sees_low_objects,
+                 clamp_command=config.clamp_command)
+
+
+def main():
+    """Entry point of `rosrun tb3_sim tb3_sim_node`; exits 1 with a one-line reason on bad parameters."""
+    try:
+        ensure_use_sim_time()
+        rospy.init_node(NODE_NAME)
+        try:
+            config = config_from_params(rospy.get_param("~", {}), worlds_dir())
+            world = build_world(config)
+        except SimError as error:
+            rospy.logfatal(f"tb3_sim: {error}")
+            sys.exit(1)
+        node = SimNode(config, world)
+        rospy.loginfo(f"tb3_sim: world '{world.description.name}', robot '{config.robot_name}' at "
+                      f"({config.x_pos}, {config.y_pos}, yaw {config.yaw}), real_time_factor "
+                      f"{config.real_time_factor:g}{', paused' if config.paused else ''}")
+        node.spin()
+    except (KeyboardInterrupt, rospy.ROSInterruptException):
+        pass
