@@ -37,7 +37,7 @@ def test_valid_approach():
 
 
 @pytest.mark.parametrize("distance, velocity, reason", [
-    (0.4, 0.0, "approach_velocity 0.0"), (0.4, -0.1, "approach_velocity"), (0.4, 0.27, r"\(0, 0.26\]"),
+    (0.4, 0.0, "approach_velocity 0.0"), (0.4, -0.1, "approach_velocity"), (0.4, 0.27, r"must be in \(0, 0.26\]"),
     (0.4, math.nan, "approach_velocity nan"), (0.4, math.inf, "approach_velocity inf"),
     (0.19, 0.1, r"approach_distance 0.19 m must be in \[0.2, 3.5\)"), (3.5, 0.1, "approach_distance 3.5"),
     (math.nan, 0.1, "approach_distance nan"), (-1.0, 0.1, "approach_distance"),

@@ -1,30 +1,19 @@
-"""Validation of the Week 4 service requests: turn a request into a plan, or say exactly what is wrong.
+"""Validation of the Week 4 service requests: turn a request into a plan, or say exactly what is wrong
+(InvalidRequest, re-exported from tb3_client.motion).
 
 Every check happens before the robot moves, so a rejected request never causes motion.
 """
 import math
 from typing import NamedTuple
 
+from tb3_client.motion import MAX_LINEAR_MPS, InvalidRequest, Motion, check_duration, check_speed
+
 DEFAULT_LINEAR_SPEED_MPS = 0.1
 DEFAULT_ANGULAR_SPEED_RADPS = 0.3
-MAX_TIMED_MOVE_S = 60
 MOVEMENTS = ("fwd", "back", "left", "right")
 
-MAX_APPROACH_VELOCITY_MPS = 0.26   # the Waffle's top speed
 MIN_APPROACH_DISTANCE_M = 0.2      # the LiDAR sees nothing closer than 0.12 m, and the body needs room
 MAX_APPROACH_DISTANCE_M = 3.5      # the LiDAR's range_max; the distance must be strictly below it
-
-
-class InvalidRequest(ValueError):
-    """A request the server refuses; the text names the field, the value and what is allowed."""
-
-
-class Motion(NamedTuple):
-    """A constant velocity command held for `duration_s` seconds (m/s, rad/s, s)."""
-
-    linear: float
-    angular: float
-    duration_s: float
 
 
 def timed_movement(movement_request, duration, linear_speed=DEFAULT_LINEAR_SPEED_MPS,
@@ -37,13 +26,10 @@ def timed_movement(movement_request, duration, linear_speed=DEFAULT_LINEAR_SPEED
     word = movement_request.strip().lower()
     if word not in MOVEMENTS:
         raise InvalidRequest("movement_request '{}' is not one of {}".format(movement_request, ", ".join(MOVEMENTS)))
-    if duration <= 0:
-        raise InvalidRequest("duration {} s must be positive".format(duration))
-    if duration > MAX_TIMED_MOVE_S:
-        raise InvalidRequest("duration {} s is longer than the {} s limit".format(duration, MAX_TIMED_MOVE_S))
+    duration_s = check_duration("duration", duration)
     linear = {"fwd": linear_speed, "back": -linear_speed}.get(word, 0.0)
     angular = {"left": angular_speed, "right": -angular_speed}.get(word, 0.0)
-    return Motion(linear, angular, float(duration))
+    return Motion(linear, angular, duration_s)
 
 
 class ApproachPlan(NamedTuple):
@@ -55,11 +41,9 @@ class ApproachPlan(NamedTuple):
 
 def approach(approach_distance, approach_velocity):
     """The ApproachPlan for a tuos_msgs/Approach request, or InvalidRequest naming the bad field."""
-    if not math.isfinite(approach_velocity) or not 0.0 < approach_velocity <= MAX_APPROACH_VELOCITY_MPS:
-        raise InvalidRequest("approach_velocity {} m/s must be in (0, {}]".format(
-            approach_velocity, MAX_APPROACH_VELOCITY_MPS))
+    velocity = check_speed("approach_velocity", approach_velocity, MAX_LINEAR_MPS)
     if not math.isfinite(approach_distance) or not (
             MIN_APPROACH_DISTANCE_M <= approach_distance < MAX_APPROACH_DISTANCE_M):
         raise InvalidRequest("approach_distance {} m must be in [{}, {})".format(
             approach_distance, MIN_APPROACH_DISTANCE_M, MAX_APPROACH_DISTANCE_M))
-    return ApproachPlan(float(approach_distance), float(approach_velocity))
+    return ApproachPlan(float(approach_distance), velocity)

@@ -1,0 +1,1 @@
+"""services_quiz: the /turn request as a velocity plan (plain Python)."""
