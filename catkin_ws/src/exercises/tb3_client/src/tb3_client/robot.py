@@ -17,6 +17,7 @@ from sensor_msgs.msg import LaserScan
 from tb3_client.scan_ahead import closest_ahead
 
 STALE_AFTER_WALL_S = 1.0      # no /odom (or /scan while one is needed) for this long: the robot is gone
+FIRST_MESSAGE_GRACE_S = 5.0   # a request right after start-up waits this long for the first /odom and /scan
 WAIT_SLICE_WALL_S = 0.01
 STILL_SPEED_MPS = 0.002
 STILL_TIMEOUT_S = 2.0
@@ -77,11 +78,20 @@ class Robot:
         if not self._busy.acquire(blocking=False):
             raise RobotBusy("the robot is busy with another request; try again when it has finished")
         try:
+            self._wait_for_first_messages(need_scan)
             self._check_alive(need_scan)
             yield self
         finally:
             self.stop()
             self._busy.release()
+
+    def _wait_for_first_messages(self, need_scan):
+        """Give a robot that has not published yet (the simulator is still starting) a few seconds."""
+        deadline = time.monotonic() + FIRST_MESSAGE_GRACE_S
+        with self._changed:
+            while (self._odom_wall is None or (need_scan and self._scan_wall is None)) \
+                    and time.monotonic() < deadline and not rospy.is_shutdown():
+                self._changed.wait(WAIT_SLICE_WALL_S)
 
     def _check_alive(self, need_scan):
         """RobotLost unless /odom (and /scan if needed) arrived within the last STALE_AFTER_WALL_S."""

@@ -1,0 +1,64 @@
+"""A Week 4 server whose simulator dies mid-request answers with a failure within 2 s instead of hanging."""
+import os
+import signal
+import threading
+import time
+
+import pytest
+import rospy
+from tuos_msgs.srv import Approach, TimedMovement
+
+from roslab import wait_for_service, wait_for_topic
+from roslab.graph import node_pid
+
+ANSWER_WITHIN_S = 2.0
+
+
+@pytest.fixture
+def week4(ros_master):
+    """The Week 4 demo launch, started afresh for each test since the test kills its simulator."""
+    launch = ros_master.roslaunch("week4_services", "week4_demo.launch", "gui:=false", "real_time_factor:=1")
+    for name in ["/approach_service", "/timed_move_service"]:
+        wait_for_service(ros_master.uri, name, timeout_s=60)
+    wait_for_topic(ros_master.uri, "/odom")
+    yield ros_master
+    launch.stop()
+
+
+def call_in_background(name, srv_type, *args):
+    """Start a service call on a thread; returns (thread, outcome dict with 'reply' or 'error' and 'at')."""
+    outcome = {}
+
+    def run():
+        try:
+            outcome["reply"] = rospy.ServiceProxy(name, srv_type)(*args)
+        except rospy.ServiceException as error:
+            outcome["error"] = error
+        outcome["at"] = time.monotonic()
+    thread = threading.Thread(target=run, daemon=True)
+    thread.start()
+    return thread, outcome
+
+
+def kill_simulator_during(week4, name, srv_type, *args):
+    thread, outcome = call_in_background(name, srv_type, *args)
+    time.sleep(2.0)
+    assert thread.is_alive(), "the call ended before the simulator was killed: {}".format(outcome)
+    os.kill(node_pid(week4.uri, "/gazebo"), signal.SIGKILL)
+    killed_at = time.monotonic()
+    thread.join(timeout=10)
+    assert not thread.is_alive(), "the call is still hanging 10 s after the simulator died"
+    return outcome["reply"], outcome["at"] - killed_at
+
+
+def test_approach_fails_within_2_s_when_the_simulator_dies(week4):
+    reply, answered_after = kill_simulator_during(week4, "/approach_service", Approach, 0.4, 0.05)
+    assert answered_after < ANSWER_WITHIN_S
+    assert reply.response_message.startswith("Request failed: no /")
+    assert "is the simulator running?" in reply.response_message
+
+
+def test_timed_move_fails_within_2_s_when_the_simulator_dies(week4):
+    reply, answered_after = kill_simulator_during(week4, "/timed_move_service", TimedMovement, "fwd", 10)
+    assert answered_after < ANSWER_WITHIN_S
+    assert reply.success is False
