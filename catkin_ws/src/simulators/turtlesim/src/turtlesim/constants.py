@@ -18,8 +18,14 @@ WORLD_SIZE = float(numpy.float32((CANVAS_SIZE_PX - 1) / PIXELS_PER_METRE))
 WORLD_CENTRE = float(numpy.float32(WORLD_SIZE / 2.0))
 """Start x and y of turtle1 in metres (float32 5.544444561004639, logged as 5.544445)."""
 
+TICK_INTERVAL_MS = 16
+"""Period of the update timer in wall-clock milliseconds (a QTimer in the original)."""
+
 DT = 0.016
 """Fixed simulation step in seconds (0.001 x the 16 ms Qt timer); elapsed time is never used."""
+
+WINDOW_TITLE = 'TurtleSim'
+"""Title of the fixed-size CANVAS_SIZE_PX x CANVAS_SIZE_PX window."""
 
 PI = 3.14159265
 """The original's PI macro, used in the heading wrap and the sprite rotation (not math.pi)."""
