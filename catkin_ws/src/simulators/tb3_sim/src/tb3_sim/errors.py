@@ -46,3 +46,23 @@ class InvalidCommandError(SimError):
 
 class ConfigError(SimError):
     """A node parameter has a bad type or value, or names a world that does not exist."""
+
+
+class ModelXmlError(SimError):
+    """A spawn request's SDF or URDF cannot be turned into a model (syntax, format or unsupported content)."""
+
+
+class NotModelXmlError(ModelXmlError):
+    """The text is not XML, or its root is neither SDF (<sdf>/<gazebo>) nor URDF (<robot>)."""
+
+
+class NotUrdfError(ModelXmlError):
+    """spawn_urdf_model was given something other than URDF."""
+
+
+class UnknownFrameError(SimError):
+    """A reference frame names no model (and is not "", "world", "map" or "/map")."""
+
+
+class BadRequestError(SimError):
+    """A service request holds NaN, inf or an otherwise unusable value."""

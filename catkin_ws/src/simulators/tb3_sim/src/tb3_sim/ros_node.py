@@ -41,6 +41,7 @@ from tb3_sim import ros_messages
 from tb3_sim.config import config_from_params
 from tb3_sim.diff_drive import validate_command
 from tb3_sim.errors import SimError
+from tb3_sim.gazebo_api import GazeboApi
 from tb3_sim.geometry import Pose2D
 from tb3_sim.pacing import Pacer
 from tb3_sim.robot_model import WAFFLE_STATIC_TRANSFORMS
@@ -80,12 +81,18 @@ class SimNode:
             self._static_tf = rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True)
             self._static_tf.publish(ros_messages.static_tf_message(world.time_s, WAFFLE_STATIC_TRANSFORMS))
         self._cmd_vel = rospy.Subscriber("cmd_vel", Twist, self._on_cmd_vel, queue_size=1)
+        self._services = GazeboApi(self).advertise()
 
     @contextmanager
     def locked_world(self):
         """The world, for use between two physics steps (hold it briefly: physics waits)."""
         with self._lock:
             yield self._world
+
+    @property
+    def rendering_enabled(self):
+        """True while a window draws the world (get_world_properties); headless runs answer False."""
+        return False
 
     @property
     def paused(self):
