@@ -36,6 +36,17 @@ def stopped(process):
         process.stop()
 
 
+# --- interfaces, as the course's commands show them --------------------------------------------------------
+
+@pytest.mark.parametrize("service, fields, md5sum", [
+    ("add_two_int", "int64 a\nint64 b\n---\nint64 sum", "6a2e34150c00229791cc89ff309fff21"),
+    ("gazebo_server", "int64 direction\n---\nfloat32 distance", "f585dfe9780f5944bfdaecf9c4a1e42c"),
+])
+def test_rossrv_show_and_md5(ros_master, service, fields, md5sum):
+    assert run(ros_master, "rossrv", "show", PACKAGE + "/" + service).stdout.strip() == fields
+    assert run(ros_master, "rossrv", "md5", PACKAGE + "/" + service).stdout.strip() == md5sum
+
+
 # --- talker / listener -------------------------------------------------------------------------------------
 
 @pytest.fixture
