@@ -86,3 +86,11 @@ def test_course_aliases_exist(alias):
     assert result.returncode == 0, result.stdout
     launch_file = alias.replace("tb3_", "turtlebot3_") + ".launch"
     assert f"roslaunch turtlebot3_gazebo {launch_file}" in result.stdout
+
+
+def test_spawn_box_without_a_simulator_fails_clearly(ros_master):
+    result = subprocess.run(["rosrun", "tb3_sim", "spawn_box", "box1", "1", "0", "--timeout", "1"],
+                            env=ros_master.env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
+    assert result.returncode == 1
+    assert result.stderr == ("spawn_box: /gazebo/spawn_sdf_model is not available after 1 s; is the simulator "
+                             "running?\n")

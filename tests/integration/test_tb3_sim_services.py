@@ -164,3 +164,19 @@ def test_rosservice_call_from_the_command_line(ros_master, sim):
                             timeout=30)
     assert result.returncode == 0, result.stdout
     assert 'status_message: "GetModelState: got properties"' in result.stdout
+
+
+def run_spawn_box(ros_master, *args):
+    result = subprocess.run(["rosrun", "tb3_sim", "spawn_box", *args], env=ros_master.env, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, timeout=60)
+    return result.returncode, result.stdout, result.stderr
+
+
+def test_spawn_box_tool(ros_master, sim):
+    code, out, err = run_spawn_box(ros_master, "cli_box", "0.55", "-0.55", "--size", "0.2", "--yaw", "0.5")
+    assert (code, err) == (0, "")
+    assert out == ("SpawnModel: Successfully spawned entity: 'cli_box', 0.2 x 0.2 x 0.2 m, 1 kg, at (0.55, -0.55) "
+                   "yaw 0.5\n")
+    assert position("cli_box") == pytest.approx((0.55, -0.55), abs=1e-3)
+    code, out, err = run_spawn_box(ros_master, "cli_box", "0.55", "-0.55")
+    assert (code, out, err) == (1, "", "spawn_box: SpawnModel: Failure - entity already exists.\n")
