@@ -46,8 +46,9 @@ class TopicProbe:
             raise ProbeError(reply["error"])
         return reply
 
-    def subscribe(self, topic, msg_type):
-        self._ask("subscribe", topic=topic, type=msg_type)
+    def subscribe(self, topic, msg_type, wait_s=5.0):
+        """Subscribe to `topic`; waits up to `wait_s` for a publisher connection; returns the connections."""
+        return self._ask("subscribe", topic=topic, type=msg_type, wait_s=wait_s)["connections"]
 
     def take(self, topic):
         """Messages received on `topic` since the last take: [{"wall", "ros", "msg"}, ...], oldest first."""

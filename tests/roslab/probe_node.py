@@ -1,7 +1,7 @@
 """The probe node: a rospy node in its own process that a test drives over stdin/stdout, one JSON object per
 line. It exists because rospy allows one init_node per process while each test module has its own master.
 
-Requests:  {"op": "subscribe", "topic": t, "type": "pkg/Msg"}            -> {"ok": true}
+Requests:  {"op": "subscribe", "topic": t, "type": "pkg/Msg"}            -> {"ok": true, "connections": n}
            {"op": "take", "topic": t}  (and clears the buffer)           -> {"ok": true, "messages": [...]}
            {"op": "publish", "topic": t, "type": "pkg/Msg", "msg": {...}, "wait_s": 5}  -> {"ok": true}
            {"op": "now"}                                                 -> {"ok": true, "now": ros seconds}
@@ -41,14 +41,20 @@ class Probe:
         self._subscribers = {}
         self._publishers = {}
 
-    def subscribe(self, topic, type):
+    def subscribe(self, topic, type, wait_s=5.0):
+        """Subscribe, then wait up to `wait_s` for a connection to a publisher, so that a message published
+        right after this returns is not missed."""
         msg_class = self._message_class(type)
         with self._lock:
             if topic not in self._subscribers:
                 self._buffers[topic] = []
                 self._subscribers[topic] = rospy.Subscriber(topic, msg_class, self._record, callback_args=topic,
                                                             queue_size=1000)
-        return {}
+            subscriber = self._subscribers[topic]
+        deadline = time.monotonic() + wait_s
+        while subscriber.get_num_connections() == 0 and time.monotonic() < deadline:
+            time.sleep(0.02)
+        return {"connections": subscriber.get_num_connections()}
 
     def _record(self, msg, topic):
         entry = {"wall": time.time(), "ros": rospy.get_rostime().to_sec(), "msg": to_plain(msg)}

@@ -26,8 +26,9 @@ class RosProcess:
         return self.popen.poll() is None
 
     def output(self):
-        """Everything the process printed so far (stdout and stderr interleaved)."""
-        self._log.flush()
+        """Everything the process printed so far (stdout and stderr interleaved), also after stop()."""
+        if not self._log.closed:
+            self._log.flush()
         with open(self.log_path, "rb") as log:
             return log.read().decode("utf-8", "replace")
 

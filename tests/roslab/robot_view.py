@@ -42,6 +42,14 @@ class RobotView:
         self.probe.take("/odom")
         return pose_of(self.probe.wait_for_message("/odom", timeout_s))
 
+    def settled_pose(self, timeout_s=20.0, still=1e-3):
+        """(x, y, yaw) once /odom reports the robot has stopped (|v| and |w| below `still`)."""
+        def stopped(odom):
+            twist = odom["twist"]["twist"]
+            return abs(twist["linear"]["x"]) < still and abs(twist["angular"]["z"]) < still
+        self.probe.take("/odom")
+        return pose_of(self.probe.wait_for_message("/odom", timeout_s, predicate=stopped))
+
     def front_distance(self, timeout_s=20.0):
         """LiDAR distance straight ahead from the next full sweep."""
         self.probe.take("/scan")

@@ -1,0 +1,176 @@
+"""The ROS 2 Services unit, ported to ROS 1, against tb3_sim (empty world, sim time at 3x): each service has
+the course's name and type, produces the specified motion measured on /odom, and refuses bad requests
+without motion."""
+import subprocess
+import time
+
+import pytest
+import rospy
+from custom_interfaces.srv import Move, MyCustomServiceMessage, StringServiceMessage
+from services_quiz_srv.srv import Turn
+from std_srvs.srv import Empty, SetBool
+
+from roslab import wait_for_service, wait_for_topic
+from roslab.robot_view import RobotView, angle_between
+
+SERVERS = [("exercise42_pkg", "moving_right_server.py", "/moving_right"),
+           ("movement_pkg", "movement_server.py", "/movement"),
+           ("movement_pkg", "move_server.py", "/move"),
+           ("services_quiz", "turn_server.py", "/turn"),
+           ("fruit_detector_pkg", "detect_fruit_node.py", "/detect_fruit_service")]
+TYPES = {"/moving": "std_srvs/Empty", "/stop": "std_srvs/Empty", "/moving_right": "std_srvs/SetBool",
+         "/movement": "custom_interfaces/MyCustomServiceMessage", "/move": "custom_interfaces/Move",
+         "/turn": "services_quiz_srv/Turn", "/detect_fruit_service": "custom_interfaces/StringServiceMessage"}
+RAMP_S = 1.0
+
+
+@pytest.fixture(scope="module")
+def robot(ros_master):
+    ros_master.roslaunch("course_sim_services", "course_sim_services.launch", "gui:=false",
+                         "real_time_factor:=3")
+    for package, executable, _ in SERVERS:
+        ros_master.rosrun(package, executable)
+    for name in TYPES:
+        wait_for_service(ros_master.uri, name, timeout_s=60)
+    wait_for_topic(ros_master.uri, "/odom")
+    return RobotView(ros_master.probe())
+
+
+@pytest.fixture(autouse=True)
+def stopped(robot):
+    rospy.ServiceProxy("/stop", Empty)()
+    time.sleep(RAMP_S)
+
+
+def velocity(robot):
+    """(linear m/s, angular rad/s) from the next /odom twist."""
+    robot.probe.take("/odom")
+    twist = robot.probe.wait_for_message("/odom")["twist"]["twist"]
+    return twist["linear"]["x"], twist["angular"]["z"]
+
+
+def run(ros_master, *command, timeout_s=60):
+    result = subprocess.run(list(command), env=ros_master.env, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True, timeout=timeout_s)
+    return result.returncode, result.stdout
+
+
+@pytest.mark.parametrize("name", sorted(TYPES))
+def test_service_names_and_types(ros_master, robot, name):
+    code, output = run(ros_master, "rosservice", "type", name)
+    assert (code, output.strip()) == (0, TYPES[name])
+
+
+def test_service_client_starts_and_stop_client_stops_the_robot(ros_master, robot):
+    code, output = run(ros_master, "rosrun", "client_pkg", "service_client.py")
+    assert code == 0 and "the robot is moving" in output
+    time.sleep(RAMP_S)
+    assert velocity(robot) == pytest.approx((0.3, 0.3), abs=0.01)
+    code, output = run(ros_master, "rosrun", "client_pkg", "stop_client.py")
+    assert code == 0 and "the robot is stopped" in output
+    time.sleep(RAMP_S)
+    assert velocity(robot) == pytest.approx((0.0, 0.0), abs=0.01)
+
+
+def test_service_client_waits_politely_for_a_missing_service(ros_master, robot):
+    client = ros_master.rosrun("client_pkg", "service_client.py", "/moving:=/not_started_yet")
+    time.sleep(4)
+    assert client.running()
+    client.stop()
+    assert "waiting again..." in client.output()
+    assert "Traceback" not in client.output()
+
+
+def test_moving_right(robot):
+    reply = rospy.ServiceProxy("/moving_right", SetBool)(True)
+    assert (reply.success, reply.message) == (True, "MOVING TO THE RIGHT RIGHT RIGHT!")
+    time.sleep(RAMP_S)
+    assert velocity(robot) == pytest.approx((0.3, -0.3), abs=0.01)
+    reply = rospy.ServiceProxy("/moving_right", SetBool)(False)
+    assert (reply.success, reply.message) == (False, "It is time to stop!")
+    time.sleep(RAMP_S)
+    assert velocity(robot) == pytest.approx((0.0, 0.0), abs=0.01)
+
+
+@pytest.mark.parametrize("move, expected", [("Turn Left", (0.1, 0.5)), ("Turn Right", (0.1, -0.5))])
+def test_movement_words_set_the_velocity(robot, move, expected):
+    assert rospy.ServiceProxy("/movement", MyCustomServiceMessage)(move).success is True
+    time.sleep(RAMP_S)
+    assert velocity(robot) == pytest.approx(expected, abs=0.01)
+
+
+def test_movement_refuses_other_words_without_motion(robot):
+    assert rospy.ServiceProxy("/movement", MyCustomServiceMessage)("Jump").success is False
+    time.sleep(RAMP_S)
+    assert velocity(robot) == pytest.approx((0.0, 0.0), abs=0.001)
+
+
+def test_movement_client(ros_master, robot):
+    code, output = run(ros_master, "rosrun", "movement_pkg", "movement_client.py", "Stop")
+    assert code == 0 and "success = True" in output
+    code, output = run(ros_master, "rosrun", "movement_pkg", "movement_client.py")
+    assert code == 1 and "usage: rosrun movement_pkg movement_client.py" in output
+
+
+def test_move_drives_for_the_given_time_then_stops(robot):
+    before = robot.pose()
+    assert rospy.ServiceProxy("/move", Move)("forward", 0.2, 2).success is True
+    after = robot.settled_pose()
+    assert after[0] - before[0] == pytest.approx(0.4, rel=0.05)
+    time.sleep(RAMP_S)
+    assert velocity(robot)[0] == pytest.approx(0.0, abs=0.002)
+
+
+@pytest.mark.parametrize("direction, speed, seconds", [("up", 0.2, 2), ("forward", 0.2, 0), ("left", 0.2, -1),
+                                                       ("forward", 5.0, 2)])
+def test_move_refuses_bad_requests_without_motion(robot, direction, speed, seconds):
+    before = robot.pose()
+    assert rospy.ServiceProxy("/move", Move)(direction, speed, seconds).success is False
+    time.sleep(0.5)
+    after = robot.settled_pose()
+    assert abs(after[0] - before[0]) < 0.002 and abs(after[1] - before[1]) < 0.002
+
+
+def test_turn_right_for_ten_seconds(robot):
+    before = robot.pose()
+    assert rospy.ServiceProxy("/turn", Turn)("right", 0.2, 10).success is True
+    after = robot.settled_pose()
+    assert angle_between(before[2], after[2]) == pytest.approx(-2.0, abs=0.1)
+    time.sleep(RAMP_S)
+    assert velocity(robot)[1] == pytest.approx(0.0, abs=0.002)
+
+
+def test_turn_refuses_a_bad_direction(robot):
+    assert rospy.ServiceProxy("/turn", Turn)("around", 0.2, 2).success is False
+
+
+def test_quiz_client_exits_0_after_the_motion(ros_master, robot):
+    before = robot.pose()
+    code, output = run(ros_master, "rosrun", "services_quiz", "turn_client.py")
+    after = robot.settled_pose()
+    assert code == 0, output
+    assert angle_between(before[2], after[2]) == pytest.approx(-2.0, abs=0.1)
+
+
+def test_fruit_service_reports_and_publishes(robot):
+    robot.probe.subscribe("/fruit_detection", "std_msgs/String")
+    reply = rospy.ServiceProxy("/detect_fruit_service", StringServiceMessage)("apple")
+    assert (reply.success, reply.message) == (True, "looking for the apple: nothing within LiDAR range ahead")
+    assert robot.probe.wait_for_message("/fruit_detection")["data"] == reply.message
+    unknown = rospy.ServiceProxy("/detect_fruit_service", StringServiceMessage)("kiwi")
+    assert unknown.success is True and unknown.message.startswith("unknown fruit 'kiwi'")
+
+
+def test_parameter_clients_change_what_the_node_logs(ros_master, robot):
+    node = ros_master.rosrun("parameters_pkg", "parameters_node.py")
+    wait_for_service(ros_master.uri, "/minimal_param_node/get_loggers")
+    code, output = run(ros_master, "rosrun", "parameters_pkg", "get_parameters_client.py")
+    assert code == 0 and "/minimal_param_node/my_parameter = world" in output
+    code, output = run(ros_master, "rosrun", "parameters_pkg", "set_parameters_client.py", "my_parameter", "earth")
+    assert code == 0, output
+    set_at = time.monotonic()
+    while "my_parameter: earth" not in node.output():
+        assert time.monotonic() - set_at < 2.0, node.output()[-500:]
+        time.sleep(0.05)
+    code, output = run(ros_master, "rosrun", "parameters_pkg", "set_parameters_client.py", "their_parameter", "x")
+    assert code == 1 and "usage:" in output
