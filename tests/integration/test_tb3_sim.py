@@ -3,15 +3,25 @@ robot, bad commands ignored. One simulator (tb3_sim.launch, empty world, spawn p
 import math
 
 import pytest
+import rospy
+from PyQt5.QtGui import QColor, QImage
+from std_srvs.srv import Empty
 
-from roslab import wait_for_topic
+from roslab import wait_for_service, wait_for_topic
+from tb3_sim.renderer import ROBOT_FILL
 
 SPAWN = (1.0, 2.0, 0.5)
 
 
 @pytest.fixture(scope="module")
-def sim(ros_master):
-    process = ros_master.roslaunch("tb3_sim", "tb3_sim.launch", "x_pos:=1.0", "y_pos:=2.0", "yaw:=0.5")
+def snapshot_path(tmp_path_factory):
+    return tmp_path_factory.mktemp("snapshot") / "view.png"
+
+
+@pytest.fixture(scope="module")
+def sim(ros_master, snapshot_path):
+    process = ros_master.roslaunch("tb3_sim", "tb3_sim.launch", "x_pos:=1.0", "y_pos:=2.0", "yaw:=0.5",
+                                   f"snapshot_path:={snapshot_path}")
     wait_for_topic(ros_master.uri, "/odom")
     return process
 
@@ -150,3 +160,14 @@ def test_nan_and_absurd_cmd_vel_are_ignored_and_the_node_lives_on(probe, sim):
     probe.publish("/cmd_vel", "geometry_msgs/Twist", {})
     assert sim.running()
     assert "cmd_vel ignored: linear.x is nan" in sim.output()
+
+
+def test_snapshot_writes_a_png_showing_the_robot(ros_master, sim, probe, snapshot_path):
+    wait_for_service(ros_master.uri, "/gazebo/snapshot")
+    rospy.ServiceProxy("/gazebo/snapshot", Empty)()
+    image = QImage(str(snapshot_path))
+    assert not image.isNull()
+    robot = ROBOT_FILL.rgb()
+    robot_pixels = sum(QColor(image.pixel(c, r)).rgb() == robot
+                       for c in range(0, image.width(), 2) for r in range(0, image.height(), 2))
+    assert robot_pixels > 100

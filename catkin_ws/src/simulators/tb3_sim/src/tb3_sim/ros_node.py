@@ -11,7 +11,8 @@ Publishes: /clock every physics step (5 ms of sim time); `odom` (nav_msgs/Odomet
   fixed joints unless ~publish_static_tf is false. All rates are in simulated time (see sensor_outputs).
 Services: /gazebo/{reset_world, reset_simulation, pause_physics, unpause_physics, spawn_sdf_model,
   spawn_urdf_model, delete_model, get_model_state, set_model_state, get_world_properties} (see gazebo_api),
-  and ~snapshot (std_srvs/Empty): write a top-down PNG of the world to ~snapshot_path.
+  and ~snapshot (std_srvs/Empty): write a top-down PNG of the world (walls, models, robot, its trail, the
+  latest laser rays; see renderer) to ~snapshot_path; an unwritable path fails the call with the reason.
 Parameters: see tb3_sim.config (~world, ~x_pos, ~y_pos, ~yaw, ~robot_name, ~seed, ~real_time_factor,
   ~lidar_sees_low_objects, ~clamp_command, ~paused, ~headless, ~snapshot_path, ~publish_static_tf).
 /use_sim_time is set to true before the node starts if it is absent, as gazebo_ros does.
@@ -35,6 +36,7 @@ from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import Imu, JointState, LaserScan
+from std_srvs.srv import Empty, EmptyResponse
 from tf2_msgs.msg import TFMessage
 
 from tb3_sim import ros_messages
@@ -45,6 +47,8 @@ from tb3_sim.gazebo_api import GazeboApi
 from tb3_sim.geometry import Pose2D
 from tb3_sim.pacing import Pacer
 from tb3_sim.robot_model import WAFFLE_STATIC_TRANSFORMS
+from tb3_sim.scene import Trail, scene_of
+from tb3_sim.schedule import PeriodicSchedule
 from tb3_sim.sensor_outputs import Publishers, SensorOutputs
 from tb3_sim.world import World
 from tb3_sim.world_file import load_world
@@ -55,6 +59,7 @@ USE_SIM_TIME_PARAM = "/use_sim_time"
 WARNING_THROTTLE_S = 5.0
 PAUSED_POLL_S = 0.05
 MASTER_RETRY_S = 1.0
+TRAIL_RATE_HZ = 30.0
 
 
 class SimNode:
@@ -81,7 +86,10 @@ class SimNode:
             self._static_tf = rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True)
             self._static_tf.publish(ros_messages.static_tf_message(world.time_s, WAFFLE_STATIC_TRANSFORMS))
         self._cmd_vel = rospy.Subscriber("cmd_vel", Twist, self._on_cmd_vel, queue_size=1)
+        self._trail = Trail()
+        self._trail_schedule = PeriodicSchedule(TRAIL_RATE_HZ)
         self._services = GazeboApi(self).advertise()
+        self._snapshot = rospy.Service("~snapshot", Empty, self._on_snapshot)
 
     @contextmanager
     def locked_world(self):
@@ -109,12 +117,15 @@ class SimNode:
         with self._lock:
             self._world.reset_world()
             self._outputs.forget_motion()
+            self._trail.clear()
 
     def reset_simulation(self):
         """reset_world plus sim time back to 0 (/clock jumps back, as Gazebo's does)."""
         with self._lock:
             self._world.reset_simulation()
             self._outputs.restart(self._world.time_s)
+            self._trail_schedule.reset(self._world.time_s)
+            self._trail.clear()
 
     def teleported(self):
         """Tell the sensors a model was moved by a service (call with the world locked)."""
@@ -129,6 +140,17 @@ class SimNode:
         with self._lock:
             self._world.robot.set_command(linear, angular)
 
+    def _on_snapshot(self, _request):
+        from tb3_sim.renderer import save_png  # Qt is loaded on the first snapshot only
+        with self._lock:
+            scene = scene_of(self._world, self._trail, self._outputs.scan_for_view(self._world))
+        try:
+            save_png(scene, self.config.snapshot_path)
+        except OSError as error:
+            raise rospy.ServiceException(f"snapshot: {error}") from None
+        rospy.loginfo(f"snapshot written to {self.config.snapshot_path}")
+        return EmptyResponse()
+
     def spin(self):
         """Step, publish and pace until ROS shuts down."""
         while not rospy.is_shutdown():
@@ -138,6 +160,8 @@ class SimNode:
             with self._lock:
                 now_s = self._world.step()
                 outgoing = self._outputs.collect(self._world)
+                if self._trail_schedule.due(now_s):
+                    self._trail.add(*self._world.robot.pose[:2])
             for publisher, message in outgoing:
                 publisher.publish(message)
             delay_s = self._pacer.delay(now_s, time.monotonic())

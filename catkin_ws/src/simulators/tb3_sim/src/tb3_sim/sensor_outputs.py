@@ -61,6 +61,14 @@ class SensorOutputs:
         """Forget the IMU's previous velocity, so a teleport does not show up as an acceleration spike."""
         self._imu.reset()
 
+    def scan_for_view(self, world):
+        """The latest published scan if it is at most two scan periods old, otherwise a fresh one (which draws
+        from the LiDAR's noise stream, as a published scan would)."""
+        latest = self.latest_scan
+        if latest is not None and world.time_s - latest.time_s <= 2.0 / LIDAR_UPDATE_RATE_HZ:
+            return latest
+        return world.scan()
+
     def collect(self, world):
         """Messages due now that the world has stepped to `world.time_s`, as [(publisher, message)]."""
         now_s = world.time_s
