@@ -10,7 +10,7 @@ from std_srvs.srv import Empty
 from tuos_msgs.srv import Approach, SetBool, TimedMovement
 
 from roslab import wait_for_service
-from roslab.robot_view import RobotView, angle_between
+from roslab.robot_view import RobotView, angle_between, pose_of
 
 REAL_TIME_FACTOR = "3"
 STILL_M = 0.002
@@ -25,12 +25,16 @@ def robot(ros_master):
     return RobotView(ros_master.probe())
 
 
+def at_spawn_pose(odom):
+    x, y, yaw = pose_of(odom)
+    return math.hypot(x, y) < 0.01 and abs(yaw) < 0.01
+
+
 @pytest.fixture(autouse=True)
 def start_from_spawn_pose(robot):
     """Every test starts with the robot back at the origin facing the box, and still."""
     rospy.ServiceProxy("/gazebo/reset_world", Empty)()
-    x, y, yaw = robot.pose()
-    assert math.hypot(x, y) < 0.01 and abs(yaw) < 0.01
+    robot.probe.wait_for_message("/odom", timeout_s=10, predicate=at_spawn_pose)
 
 
 def call(name, srv_type, *args):

@@ -42,10 +42,14 @@ class ApproachServer:
         return ApproachResponse(message)
 
     def drive_until_close(self, plan):
-        """Run the controller on every /odom update, feeding it each new LiDAR sweep; returns the outcome."""
+        """Run the controller on every /odom update, feeding it each new LiDAR sweep; returns the outcome.
+
+        Starts from a sweep taken after the request arrived, never an older one (the world may have been
+        reset or the robot moved since)."""
+        self.robot.wait_for_new_sweep()
         controller = ApproachController(plan)
         start = self.robot.odom
-        sweeps_seen = 0
+        sweeps_seen = None
         rospy.loginfo("Approaching at %.2f m/s to stop %.2f m from the object ahead...",
                       plan.velocity, plan.distance)
         while True:
