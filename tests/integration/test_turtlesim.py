@@ -433,3 +433,13 @@ def test_sigint_ends_the_node_cleanly(ros_master, sim):
     wait_for_topic(ros_master.uri, "/short_lived/turtle1/pose")
     assert process.stop() == 0
     assert "Traceback" not in process.log_path.read_text()
+
+
+def test_a_turtle_named_like_another_shares_its_names_as_in_roscpp(ros_master, fresh, probe):
+    assert call("/spawn", Spawn, 1.0, 1.0, 0.0, "/turtle1").name == "/turtle1"
+    wait_for_log(fresh, "Tried to advertise a service that is already advertised in this node "
+                        "[/turtle1/set_pen]")
+    call("/kill", Kill, "/turtle1")
+    call("/turtle1/teleport_absolute", TeleportAbsolute, 3.0, 3.0, 0.0)
+    next_pose(probe, lambda p: (p["x"], p["y"]) == (3.0, 3.0))
+    assert fresh.running()

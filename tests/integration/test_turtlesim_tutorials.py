@@ -83,7 +83,7 @@ def test_teleop_arrow_keys_drive_turtle1_and_q_restores_the_terminal(ros_master,
     wait_for_connection(ros_master, "/teleop_turtle", "/turtle1/cmd_vel")
     os.write(main_fd, b"\x1b[A")
     pose = next_pose(probe, lambda p: p["linear_velocity"] > 0)
-    assert (pose["linear_velocity"], pose["angular_velocity"]) == (0.5, 0.0), "scale_linear from /scale_linear"
+    assert (pose["linear_velocity"], pose["angular_velocity"]) == (0.5, 0.0), "scale from /scale_linear"
     os.write(main_fd, b"\x1b[D")
     pose = next_pose(probe, lambda p: p["angular_velocity"] != 0)
     assert (pose["linear_velocity"], pose["angular_velocity"]) == (0.0, 2.0), "scale_angular default 2.0"

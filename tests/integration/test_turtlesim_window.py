@@ -1,5 +1,8 @@
 """turtlesim_node with a display: the TurtleSim window under a virtual X server (Debian's xvfb-run),
-the same ROS behaviour as headless, a snapshot of the view, and the fallbacks without a display."""
+the same ROS behaviour as headless, a snapshot of the view, and the fallbacks without a display.
+
+Every node here runs without QT_QPA_PLATFORM (other test modules set it to offscreen in this process),
+so that Qt and the node choose the platform from DISPLAY alone, as in a user's terminal."""
 import ctypes
 import time
 
@@ -64,7 +67,8 @@ class XDisplay:
 def window_sim(ros_master, probe, tmp_path_factory, monkeypatch_module):
     """turtlesim_node in namespace /win under xvfb-run; yields the X display name it got."""
     info = tmp_path_factory.mktemp("xvfb") / "display"
-    ros_master.start(["xvfb-run", "-a", "-s", "-screen 0 640x480x24", "sh", "-c",
+    ros_master.start(["env", "-u", "QT_QPA_PLATFORM", "xvfb-run", "-a", "-s", "-screen 0 640x480x24",
+                      "sh", "-c",
                       'echo "$DISPLAY $XAUTHORITY" > "$0"; exec rosrun turtlesim turtlesim_node __ns:=/win',
                       str(info)], "turtlesim-xvfb")
     wait_for_service(ros_master.uri, NS + "/turtlesim/snapshot", timeout_s=30)
@@ -106,8 +110,8 @@ def test_snapshot_shows_the_trail_drawn_in_the_window(ros_master, window_sim, pr
 
 
 def test_an_unreachable_display_falls_back_to_headless(ros_master, probe):
-    process = ros_master.start(["env", "DISPLAY=:98765", "rosrun", "turtlesim", "turtlesim_node",
-                                "__ns:=/nodisplay"], "turtlesim-bad-display")
+    process = ros_master.start(["env", "-u", "QT_QPA_PLATFORM", "DISPLAY=:98765", "rosrun", "turtlesim",
+                                "turtlesim_node", "__ns:=/nodisplay"], "turtlesim-bad-display")
     wait_for_topic(ros_master.uri, "/nodisplay/turtle1/pose")
     wait_until(lambda: "Cannot connect to the X display [:98765]: running headless" in process.output(), 10,
                "the fallback warning")
@@ -117,8 +121,8 @@ def test_an_unreachable_display_falls_back_to_headless(ros_master, probe):
 
 
 def test_no_display_runs_headless_without_a_warning(ros_master, probe):
-    process = ros_master.start(["env", "-u", "DISPLAY", "rosrun", "turtlesim", "turtlesim_node",
-                                "__ns:=/headless"], "turtlesim-no-display")
+    process = ros_master.start(["env", "-u", "QT_QPA_PLATFORM", "-u", "DISPLAY", "rosrun", "turtlesim",
+                                "turtlesim_node", "__ns:=/headless"], "turtlesim-no-display")
     wait_for_topic(ros_master.uri, "/headless/turtle1/pose")
     probe.subscribe("/headless/turtle1/pose", "turtlesim/Pose")
     probe.wait_for_message("/headless/turtle1/pose", 10)

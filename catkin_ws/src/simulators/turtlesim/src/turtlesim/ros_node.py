@@ -142,15 +142,18 @@ class TurtleSimNode:
                 rospy.logdebug('cmd_vel arrived after its turtle was removed: %s', error)
 
     def set_pen(self, name, request):
+        """<name>/set_pen: always succeeds while the turtle exists."""
         self._serve(self._sim.set_pen, name, request.r, request.g, request.b, request.width,
                     request.off)
         return SetPenResponse()
 
     def teleport_absolute(self, name, request):
+        """<name>/teleport_absolute: queued for the next tick; non-finite values are ignored."""
         self._serve(self._sim.teleport_absolute, name, request.x, request.y, request.theta)
         return TeleportAbsoluteResponse()
 
     def teleport_relative(self, name, request):
+        """<name>/teleport_relative: queued for the next tick; non-finite values are ignored."""
         self._serve(self._sim.teleport_relative, name, request.linear, request.angular)
         return TeleportRelativeResponse()
 
