@@ -7,7 +7,7 @@ import rospy
 from PyQt5.QtGui import QColor, QImage
 from std_srvs.srv import Empty
 
-from roslab import wait_for_service, wait_for_topic
+from roslab import wait_for_service, wait_for_topic, wait_until
 from tb3_sim.renderer import ROBOT_FILL
 
 SPAWN = (1.0, 2.0, 0.5)
@@ -131,8 +131,9 @@ def test_rates_in_sim_time(probe, topic, rate_hz):
 
 def test_clock_advances_in_5_ms_steps(probe):
     times = [entry["msg"]["clock"] for entry in probe.collect("/clock", 0.5)]
-    steps = {round(b - a, 6) for a, b in zip(times, times[1:])}
-    assert steps == {0.005}
+    steps = [round((b - a) / 0.005, 6) for a, b in zip(times, times[1:])]
+    assert all(step == int(step) > 0 for step in steps)
+    assert steps.count(1) > 0.9 * len(steps), "a busy machine may drop a few /clock messages, not many"
 
 
 def test_cmd_vel_drives_the_robot_along_its_heading(probe):
@@ -152,14 +153,15 @@ def test_cmd_vel_drives_the_robot_along_its_heading(probe):
 def test_nan_and_absurd_cmd_vel_are_ignored_and_the_node_lives_on(probe, sim):
     probe.publish("/cmd_vel", "geometry_msgs/Twist", {"angular": {"z": 0.5}})
     probe.wait_for_message("/odom", predicate=lambda m: m["twist"]["twist"]["angular"]["z"] > 0.49)
-    for bad in ({"linear": {"x": float("nan")}}, {"angular": {"z": float("inf")}}, {"linear": {"x": 1e9}}):
+    probe.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": float("nan")}})
+    wait_until(lambda: "cmd_vel ignored: linear.x is nan" in sim.output(), 10, "the throttled warning")
+    for bad in ({"angular": {"z": float("inf")}}, {"linear": {"x": 1e9}}):
         probe.publish("/cmd_vel", "geometry_msgs/Twist", bad)
-    probe.take("/odom")
-    held = probe.wait_for_message("/odom", predicate=lambda m: True)
+        probe.collect("/odom", 0.1)
+    held = probe.wait_for_message("/odom")
     assert held["twist"]["twist"]["angular"]["z"] == pytest.approx(0.5, abs=1e-6)
     probe.publish("/cmd_vel", "geometry_msgs/Twist", {})
     assert sim.running()
-    assert "cmd_vel ignored: linear.x is nan" in sim.output()
 
 
 def test_snapshot_writes_a_png_showing_the_robot(ros_master, sim, probe, snapshot_path):
