@@ -78,20 +78,21 @@ class Robot:
         if not self._busy.acquire(blocking=False):
             raise RobotBusy("the robot is busy with another request; try again when it has finished")
         try:
-            self._wait_for_first_messages(need_scan)
-            self._check_alive(need_scan)
+            self.wait_until_ready(need_scan)
             yield self
         finally:
             self.stop()
             self._busy.release()
 
-    def _wait_for_first_messages(self, need_scan):
-        """Give a robot that has not published yet (the simulator is still starting) a few seconds."""
+    def wait_until_ready(self, need_scan=False):
+        """Give a robot that has not published yet (the simulator is still starting) up to
+        FIRST_MESSAGE_GRACE_S, then RobotLost unless /odom (and /scan if needed) are arriving."""
         deadline = time.monotonic() + FIRST_MESSAGE_GRACE_S
         with self._changed:
             while (self._odom_wall is None or (need_scan and self._scan_wall is None)) \
                     and time.monotonic() < deadline and not rospy.is_shutdown():
                 self._changed.wait(WAIT_SLICE_WALL_S)
+        self._check_alive(need_scan)
 
     def _check_alive(self, need_scan):
         """RobotLost unless /odom (and /scan if needed) arrived within the last STALE_AFTER_WALL_S."""

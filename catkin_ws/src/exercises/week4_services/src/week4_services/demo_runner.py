@@ -1,8 +1,8 @@
 """Runs the demo tour (demo_tour.TOUR) against the running Week 4 servers and prints the measured table.
 
 Waits for the services, calls each in turn, measures the robot before and after from /odom and /scan, prints
-one table, then asks the simulator for a top-down PNG of the run (its ~snapshot service) when a path is
-given. Exit code 0 when every call returned, 1 otherwise.
+one table, then (with --snapshot) asks the simulator for a top-down PNG of the run through its ~snapshot
+service, which writes it to the simulator's ~snapshot_path. Exit code 0 when every call returned, 1 otherwise.
 """
 import argparse
 import math
@@ -47,6 +47,7 @@ class DemoRunner:
     def run(self):
         for service in SERVICE_TYPES:
             rospy.wait_for_service(service, WAIT_FOR_SERVICES_S)
+        self.robot.wait_until_ready(need_scan=True)
         rows = []
         for number, stop in enumerate(TOUR, start=1):
             before = self.pose()
@@ -61,23 +62,22 @@ class DemoRunner:
         print(format_table(("#", "request", "reply", "measured from /odom and /scan"), rows))
 
 
-def snapshot(path):
-    """Ask the simulator for a top-down PNG of the world, the robot and its trail at `path`."""
-    rospy.set_param("/gazebo/snapshot_path", path)
+def snapshot():
+    """Ask the simulator for a top-down PNG of the world, the robot and its trail."""
     rospy.wait_for_service(SNAPSHOT_SERVICE, 10.0)
     rospy.ServiceProxy(SNAPSHOT_SERVICE, Empty)()
 
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description="Call each Week 4 service and print what the robot did.")
-    parser.add_argument("--picture", help="write a top-down PNG of the run here")
+    parser.add_argument("--snapshot", action="store_true",
+                        help="ask the simulator for a top-down PNG of the run at the end")
     args = parser.parse_args(rospy.myargv(argv if argv is not None else sys.argv)[1:])
     rospy.init_node("week4_demo_tour")
     try:
         DemoRunner().run()
-        if args.picture:
-            snapshot(args.picture)
-            print("\nTop-down picture of the run: {}".format(args.picture))
+        if args.snapshot:
+            snapshot()
     except (rospy.ROSException, rospy.ServiceException, RobotError) as error:
         print("demo: {}".format(error), file=sys.stderr)
         return 1
