@@ -110,7 +110,7 @@ def test_teleop_rejects_a_scale_that_is_not_a_number(ros_master, sim, terminal):
         assert teleop.popen.wait(timeout=20) == 2
     finally:
         master_api(ros_master).deleteParam("/scale_angular")
-    assert "/scale_angular must be a number, got 'fast'" in teleop.output()
+    assert "/scale_angular must be a finite number, got 'fast'" in teleop.output()
     assert canonical_mode(tty_fd)
 
 

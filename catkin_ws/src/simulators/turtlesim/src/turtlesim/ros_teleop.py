@@ -5,8 +5,9 @@ namespace, queue 1): one Twist per arrow key, linear.x = +-scale_linear or angul
 +-scale_angular. Params scale_linear and scale_angular (numbers, default 2.0) are read once at
 start from the node's namespace, not privately. `q` quits; the terminal is restored on every
 exit path (q, Ctrl-C, SIGTERM, end of input). Without a terminal on stdin it says so and exits
-with 1; a non-numeric scale exits with 2.
+with 1; a scale that is not a finite number exits with 2.
 """
+import math
 import sys
 
 import rospy
@@ -31,10 +32,12 @@ class ConfigError(ValueError):
 
 
 def read_scale(name, default):
-    """Number parameter `name` (node namespace) as a float; ConfigError for anything else."""
+    """Number parameter `name` (node namespace) as a float; ConfigError for anything else,
+    including NaN and infinities."""
     value = rospy.get_param(name, default)
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise ConfigError('%s must be a number, got %r' % (rospy.resolve_name(name), value))
+    if (isinstance(value, bool) or not isinstance(value, (int, float))
+            or not math.isfinite(value)):
+        raise ConfigError('%s must be a finite number, got %r' % (rospy.resolve_name(name), value))
     return float(value)
 
 
@@ -93,7 +96,7 @@ def main():
         with terminal as keys:
             teleop.run(keys)
     except KeyboardInterrupt:
-        pass
+        pass  # Ctrl-C is how a user may quit; the terminal is already restored
     finally:
         rospy.signal_shutdown('teleop finished')
     return 0
