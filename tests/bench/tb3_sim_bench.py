@@ -1,0 +1,116 @@
+"""tb3_sim benchmarks for scripts/bench (wall-clock figures; not a test, never asserted).
+
+    source scripts/env.sh && python3 tests/bench/tb3_sim_bench.py
+
+Measures, each on a private roscore with the simulator started by its launch file (headless):
+- real-time factor at ~real_time_factor:=0 in turtlebot3_world with /scan and /odom subscribed (target >= 20x);
+- CPU of the simulator process at factor 1, same subscriptions, as % of one core (target <= 15%);
+- one 360-beam scan in turtlebot3_world, from tb3_sim.benchmark (target <= 0.5 ms);
+- wall time from `roslaunch` to the first /scan message (target <= 3 s).
+`run()` returns the rows [(name, value, unit, target, comparison)] for scripts/bench's table.
+"""
+import os
+import sys
+import tempfile
+import time
+import xmlrpc.client
+from pathlib import Path
+
+import rosgraph
+import rospy
+from gazebo_msgs.srv import GetWorldProperties
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from roslab import RosMaster, wait_for_service, wait_until  # noqa: E402  (needs the sys.path entry above)
+from tb3_sim.benchmark import bench_scan  # noqa: E402
+
+MEASURE_S = 10.0
+WORLD_ARGS = ("world:=turtlebot3_world", "x_pos:=-2.0", "y_pos:=-0.5", "gui:=false")
+CLOCK_TICKS_PER_S = os.sysconf("SC_CLK_TCK")
+
+
+def _sim_time(master):
+    os.environ["ROS_MASTER_URI"] = master.uri
+    return rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)().sim_time
+
+
+def _node_pid(master, node="/gazebo"):
+    uri = rosgraph.Master("/bench", master_uri=master.uri).lookupNode(node)
+    return xmlrpc.client.ServerProxy(uri).getPid("/bench")[2]
+
+
+def _cpu_seconds(pid):
+    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / CLOCK_TICKS_PER_S
+
+
+def _with_simulator(factor, measure):
+    """Start roscore + the simulator at `factor` with a probe on /scan and /odom; return measure(master)."""
+    master = RosMaster(Path(tempfile.mkdtemp(prefix="tb3_bench_")))
+    try:
+        master.roslaunch("tb3_sim", "tb3_sim.launch", f"real_time_factor:={factor}", *WORLD_ARGS)
+        wait_for_service(master.uri, "/gazebo/get_world_properties", 30)
+        probe = master.probe()
+        probe.subscribe("/scan", "sensor_msgs/LaserScan")
+        probe.subscribe("/odom", "nav_msgs/Odometry")
+        probe.wait_for_message("/scan", 30)
+        return measure(master)
+    finally:
+        master.shutdown()
+
+
+def real_time_factor_unpaced():
+    """Sim seconds per wall second at ~real_time_factor:=0 with /scan and /odom subscribed."""
+    def measure(master):
+        sim_start, wall_start = _sim_time(master), time.monotonic()
+        time.sleep(MEASURE_S)
+        return (_sim_time(master) - sim_start) / (time.monotonic() - wall_start)
+    return _with_simulator(0, measure)
+
+
+def cpu_percent_at_real_time():
+    """CPU of the simulator process at factor 1, % of one core."""
+    def measure(master):
+        pid = _node_pid(master)
+        cpu_start, wall_start = _cpu_seconds(pid), time.monotonic()
+        time.sleep(MEASURE_S)
+        return 100.0 * (_cpu_seconds(pid) - cpu_start) / (time.monotonic() - wall_start)
+    return _with_simulator(1, measure)
+
+
+def launch_to_first_scan_s():
+    """Wall seconds from `roslaunch tb3_sim tb3_sim.launch` (master already up) to the first /scan."""
+    master = RosMaster(Path(tempfile.mkdtemp(prefix="tb3_bench_")))
+    try:
+        probe = master.probe()
+        probe.subscribe("/scan", "sensor_msgs/LaserScan")
+        start = time.time()
+        master.roslaunch("tb3_sim", "tb3_sim.launch", *WORLD_ARGS)
+        entries = wait_until(lambda: probe.take("/scan"), 30, "the first /scan", interval_s=0.01)
+        return entries[0]["wall"] - start
+    finally:
+        master.shutdown()
+
+
+def run():
+    """[(name, value, unit, target, comparison)] rows; comparison is ">=" or "<=" against target."""
+    return [
+        ("real-time factor at ~real_time_factor:=0 (/scan, /odom subscribed)", real_time_factor_unpaced(), "x",
+         20.0, ">="),
+        ("CPU at real_time_factor 1 (/scan, /odom subscribed)", cpu_percent_at_real_time(), "% of a core",
+         15.0, "<="),
+        ("one 360-beam scan in turtlebot3_world", bench_scan() * 1e3, "ms", 0.5, "<="),
+        ("roslaunch to first /scan", launch_to_first_scan_s(), "s", 3.0, "<="),
+    ]
+
+
+def main():
+    print(f"{'measure':<70} {'value':>10}  {'target':<16} ok")
+    for name, value, unit, target, comparison in run():
+        ok = value >= target if comparison == ">=" else value <= target
+        print(f"{name:<70} {value:>10.3f}  {comparison} {target:g} {unit:<10} {'yes' if ok else 'NO'}")
+
+
+if __name__ == "__main__":
+    main()
