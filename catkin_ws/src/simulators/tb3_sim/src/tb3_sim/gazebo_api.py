@@ -1,16 +1,18 @@
 """The /gazebo/* services of gazebo_ros_api_plugin (noetic) over the tb3_sim core, with Gazebo's strings.
 
-| Service / topic                 | Type                           | Behaviour                                    |
-|---------------------------------|--------------------------------|----------------------------------------------|
-| reset_world                     | std_srvs/Empty                 | models and robot to their initial poses, command zeroed, spawned models kept, sim time runs on |
-| reset_simulation                | std_srvs/Empty                 | the same, and sim time back to 0 (/clock jumps back) |
-| pause_physics / unpause_physics | std_srvs/Empty                 | stop / resume stepping: /clock stops too     |
-| spawn_sdf_model                 | gazebo_msgs/SpawnModel         | SDF or URDF (see model_xml) -> a box or cylinder model |
-| spawn_urdf_model                | gazebo_msgs/SpawnModel         | the same, URDF only                          |
-| delete_model                    | gazebo_msgs/DeleteModel        | not the robot, the ground plane or the static world geometry |
-| get_model_state                 | gazebo_msgs/GetModelState      | world pose and world-frame twist, or relative to relative_entity_name |
-| set_model_state (service and topic) | gazebo_msgs/SetModelState / ModelState | teleport with a twist (in reference_frame) |
-| get_world_properties            | gazebo_msgs/GetWorldProperties | sim_time, model_names (model_states order), rendering_enabled |
+- reset_world (std_srvs/Empty): models and robot back to their initial poses, command zeroed, spawned models
+  kept, sim time runs on;
+- reset_simulation (std_srvs/Empty): the same, and sim time back to 0 (/clock jumps back);
+- pause_physics / unpause_physics (std_srvs/Empty): stop / resume stepping, so /clock stops too;
+- spawn_sdf_model (gazebo_msgs/SpawnModel): SDF or URDF (see model_xml) -> a box or cylinder model;
+- spawn_urdf_model (gazebo_msgs/SpawnModel): the same, URDF only;
+- delete_model (gazebo_msgs/DeleteModel): any model but the robot, the ground plane and the world geometry;
+- get_model_state (gazebo_msgs/GetModelState): world pose and world-frame twist, or relative to
+  relative_entity_name; header.seq counts the calls per model, as Gazebo's does;
+- set_model_state (gazebo_msgs/SetModelState, and the topic of gazebo_msgs/ModelState): teleport with a twist,
+  both given in reference_frame;
+- get_world_properties (gazebo_msgs/GetWorldProperties): sim_time, model_names (model_states order),
+  rendering_enabled.
 
 Spawn: `model_name` overrides the XML's name (the XML's name is used when it is empty); `initial_pose` (x, y,
 yaw; z, roll and pitch ignored) is composed with the pose in the XML, then with `reference_frame` (see
@@ -31,8 +33,8 @@ from gazebo_msgs.srv import (DeleteModel, DeleteModelResponse, GetModelState, Ge
 from std_srvs.srv import Empty, EmptyResponse
 
 from tb3_sim import ros_messages
-from tb3_sim.errors import (BadRequestError, DuplicateModelError, ModelXmlError, NotModelXmlError, NotUrdfError, SimError,
-                            UnknownFrameError, UnknownModelError)
+from tb3_sim.errors import (BadRequestError, DuplicateModelError, ModelXmlError, NotModelXmlError, NotUrdfError,
+                            SimError, UnknownFrameError, UnknownModelError)
 from tb3_sim.geometry import Twist2D
 from tb3_sim.model_xml import compose, parse_model_xml
 from tb3_sim.reference_frames import frame_state, from_world, to_world
@@ -53,8 +55,8 @@ GAZEBO_FAILURES = {
         "SpawnModel: reference reference_frame not found, did you forget to scope the link by model name?",
     ("DeleteModel", UnknownModelError): "DeleteModel: model does not exist",
     ("GetModelState", UnknownModelError): "GetModelState: model does not exist",
-    ("GetModelState", UnknownFrameError): "GetModelState: reference relative_entity_name not found, did you "
-                                          "forget to scope the body by model name?",
+    ("GetModelState", UnknownFrameError):
+        "GetModelState: reference relative_entity_name not found, did you forget to scope the body by model name?",
     ("SetModelState", UnknownModelError): "SetModelState: model does not exist",
     ("SetModelState", UnknownFrameError): "SetModelState: specified reference frame entity does not exist",
 }

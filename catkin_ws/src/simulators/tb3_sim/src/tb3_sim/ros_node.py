@@ -16,6 +16,8 @@ Services: /gazebo/{reset_world, reset_simulation, pause_physics, unpause_physics
 Parameters: see tb3_sim.config (~world, ~x_pos, ~y_pos, ~yaw, ~robot_name, ~seed, ~real_time_factor,
   ~lidar_sees_low_objects, ~clamp_command, ~paused, ~headless, ~snapshot_path, ~publish_static_tf).
 /use_sim_time is set to true before the node starts if it is absent, as gazebo_ros does.
+View: headless for now (the interactive window is a later step: it will paint with renderer.paint from a Scene
+copied under the lock, as ~snapshot does); ~headless is accepted for launch compatibility.
 
 Threads: the main thread steps physics and publishes; rospy runs every callback in its own thread. One lock
 guards the world: callbacks change it only between two steps. Publishers write synchronously from the loop

@@ -1,12 +1,10 @@
 """What the simulator publishes after each physics step, and when (simulated time), as Gazebo does.
 
-| Topic                  | Rate (sim time)                   | Only while subscribed |
-|------------------------|-----------------------------------|-----------------------|
-| /clock                 | every step (200 Hz at 5 ms steps) | no                    |
-| /odom, /tf, /joint_states | 30 Hz (the diff-drive plugin's updateRate) | no         |
-| /scan                  | 5 Hz (the LDS-01 sensor's update_rate) | yes (Gazebo's sensor is lazy too) |
-| /imu                   | IMU_RATE_HZ = 100 Hz              | yes                   |
-| /gazebo/model_states   | MODEL_STATES_RATE_HZ = 100 Hz     | yes                   |
+- /clock: every physics step (200 Hz of sim time at 5 ms steps);
+- /odom, /tf (odom -> base_footprint) and /joint_states: 30 Hz, the diff-drive plugin's updateRate;
+- /scan: 5 Hz, the LDS-01 sensor's update_rate, only while subscribed (Gazebo's sensor is lazy too);
+- /imu: IMU_RATE_HZ = 100 Hz, only while subscribed;
+- /gazebo/model_states: MODEL_STATES_RATE_HZ = 100 Hz, only while subscribed.
 
 Gazebo publishes /imu and /gazebo/model_states on every 1 ms world update (1 kHz); 100 Hz keeps them smooth
 for course code while leaving the Python message path cheap enough for faster-than-real-time runs.
@@ -16,9 +14,9 @@ No rospy here: publishers are injected (anything with `publish(msg)` and `get_nu
 from typing import Any, NamedTuple
 
 from tb3_sim import ros_messages
+from tb3_sim.diff_drive import DRIVE_UPDATE_RATE_HZ
 from tb3_sim.imu import Imu
 from tb3_sim.lidar import LIDAR_UPDATE_RATE_HZ
-from tb3_sim.diff_drive import DRIVE_UPDATE_RATE_HZ
 from tb3_sim.schedule import PeriodicSchedule
 
 IMU_RATE_HZ = 100.0
