@@ -6,6 +6,8 @@
 # - ROS is bound to this machine only unless you chose otherwise before sourcing: ROS_HOSTNAME=localhost and
 #   ROS_MASTER_URI=http://localhost:11311 are set only when you have not set ROS_MASTER_URI, ROS_HOSTNAME or
 #   ROS_IP yourself. ROS 1 has no authentication: opening it to a network opens the robot to that network.
+#   roscpp nodes (rosout too) would still listen on every interface; the ros_loopback package's bind()
+#   wrapper, preloaded here, keeps them on loopback whenever ROS is bound to localhost.
 # - The course's aliases: src (re-source this file), tb3_empty_world and tb3_world (when their launch files exist).
 #
 # Safe to source more than once.
@@ -48,6 +50,15 @@ else
     [ -n "$_lab_user_master" ] && export ROS_MASTER_URI="$_lab_user_master"
 fi
 unset _lab_user_master _lab_user_hostname _lab_user_ip
+
+_lab_loopback="$LAB_ROOT/catkin_ws/devel/lib/libros_loopback.so"
+if [ -f "$_lab_loopback" ]; then
+    case ":${LD_PRELOAD:-}:" in
+        *":$_lab_loopback:"*) ;;
+        *) export LD_PRELOAD="$_lab_loopback${LD_PRELOAD:+:$LD_PRELOAD}" ;;
+    esac
+fi
+unset _lab_loopback
 
 alias src="source '$LAB_ROOT/scripts/env.sh'"
 _lab_tb3_launch="$LAB_ROOT/catkin_ws/src/compat/turtlebot3_gazebo/launch"

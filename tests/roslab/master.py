@@ -30,7 +30,7 @@ class RosMaster:
                         ROS_HOME=str(workdir), ROS_LOG_DIR=str(workdir / "log"), PYTHONUNBUFFERED="1")
         self.env.pop("ROS_IP", None)
         self._processes = []
-        self._core = self.start(["roscore", "-p", str(self.port)], "roscore")
+        self.core = self.start(["roscore", "-p", str(self.port)], "roscore")
         wait_until(self._rosout_ready, 30, "roscore on port {}".format(self.port))
 
     def _rosout_ready(self):
