@@ -180,3 +180,21 @@ def test_spawn_box_tool(ros_master, sim):
     assert position("cli_box") == pytest.approx((0.55, -0.55), abs=1e-3)
     code, out, err = run_spawn_box(ros_master, "cli_box", "0.55", "-0.55")
     assert (code, out, err) == (1, "", "spawn_box: SpawnModel: Failure - entity already exists.\n")
+
+
+def test_spawn_model_tool_from_a_file_and_a_parameter(ros_master, sim, tmp_path):
+    model = tmp_path / "crate.urdf"
+    model.write_text(URDF_BOX)
+    result = subprocess.run(["rosrun", "tb3_sim", "spawn_model", "-urdf", "-file", str(model), "-model", "crate2",
+                             "-x", "0.55", "-y", "-1.0"], env=ros_master.env, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True, timeout=60)
+    assert result.returncode == 0, result.stdout
+    assert "Spawn status: SpawnModel: Successfully spawned entity" in result.stdout
+    assert position("crate2") == pytest.approx((0.55, -1.0), abs=1e-3)
+    subprocess.run(["rosparam", "set", "/crate_description", URDF_BOX], env=ros_master.env, check=True, timeout=30)
+    result = subprocess.run(["rosrun", "tb3_sim", "spawn_model", "-urdf", "-param", "crate_description", "-model",
+                             "crate2"], env=ros_master.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            text=True, timeout=60)
+    assert result.returncode == 1
+    assert "Spawn status: SpawnModel: Failure - entity already exists.\nSpawn service failed. Exiting." in \
+        result.stdout
