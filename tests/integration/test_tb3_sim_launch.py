@@ -94,3 +94,39 @@ def test_spawn_box_without_a_simulator_fails_clearly(ros_master):
     assert result.returncode == 1
     assert result.stderr == ("spawn_box: /gazebo/spawn_sdf_model is not available after 1 s; is the simulator "
                              "running?\n")
+
+
+def test_approach_arena_scan_sees_the_target_box_ahead(launch, ros_master):
+    launch("turtlebot3_gazebo", "turtlebot3_approach_arena.launch")
+    probe = ros_master.probe()
+    try:
+        probe.subscribe("/scan", "sensor_msgs/LaserScan")
+        scan = probe.wait_for_message("/scan")
+    finally:
+        probe.stop()
+    assert scan["ranges"][0] == pytest.approx(1.3 + 0.064, abs=0.04)
+    assert scan["ranges"][180] == pytest.approx(1.0 - 0.064, abs=0.04)
+
+
+@pytest.mark.parametrize("param, message", [
+    ("_world:=nowhere", "tb3_sim: ~world: no world file"),
+    ("_real_time_factor:=-2", "tb3_sim: ~real_time_factor must be >= 0.0, got -2"),
+])
+def test_bad_parameters_stop_the_node_with_one_clear_line(ros_master, param, message):
+    node_name = "__name:=bad_" + param.split(":=")[0].strip("_")
+    result = subprocess.run(["rosrun", "tb3_sim", "tb3_sim_node", param, node_name], env=ros_master.env,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
+    assert result.returncode == 1
+    assert message in result.stdout
+    assert "Traceback" not in result.stdout
+
+
+def test_a_broken_world_file_names_file_and_key(ros_master, tmp_path):
+    world = tmp_path / "broken.yaml"
+    world.write_text("name: broken\nmodels:\n  - {name: b, type: box, size: [1, 1]}\n")
+    result = subprocess.run(["rosrun", "tb3_sim", "tb3_sim_node", f"_world:={world}", "__name:=broken_world"],
+                            env=ros_master.env,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
+    assert result.returncode == 1
+    assert f"{world}: models[0].size: expected a list of 3 numbers" in result.stdout
+    assert "Traceback" not in result.stdout
