@@ -39,6 +39,13 @@ class RosMaster:
         except (rosgraph.MasterError, OSError):
             return None
 
+    def restart_core(self):
+        """Stop roscore (master and rosout) and start a fresh one on the same port, as a user who pressed
+        Ctrl-C in the roscore terminal and started it again would."""
+        self.core.stop()
+        self.core = self.start(["roscore", "-p", str(self.port)], "roscore")
+        wait_until(self._rosout_ready, 30, "the restarted roscore on port {}".format(self.port))
+
     def start(self, command, label):
         """Start `command` against this master; it is ended by `shutdown()` at the latest."""
         log_path = self.workdir / "{}-{}.log".format(len(self._processes), label)

@@ -11,6 +11,7 @@ import time
 
 import rospy
 from geometry_msgs.msg import Twist
+from master_reconnect import keep_registered
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
 
@@ -36,7 +37,9 @@ class RobotLost(RobotError):
 
 
 class Robot:
-    """Velocity commands and the latest odometry and LiDAR sweep, each with its wall-clock arrival time."""
+    """Velocity commands and the latest odometry and LiDAR sweep, each with its wall-clock arrival time.
+
+    Creating it also keeps the node registered across a roscore restart (master_reconnect)."""
 
     def __init__(self):
         self._cmd_vel = rospy.Publisher("cmd_vel", Twist, queue_size=1)
@@ -50,6 +53,7 @@ class Robot:
         rospy.Subscriber("odom", Odometry, self._on_odom, queue_size=1)
         rospy.Subscriber("scan", LaserScan, self._on_scan, queue_size=1)
         rospy.on_shutdown(self.stop)
+        keep_registered()
 
     def _on_odom(self, msg):
         with self._changed:
