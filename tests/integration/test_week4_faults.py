@@ -62,3 +62,16 @@ def test_timed_move_fails_within_2_s_when_the_simulator_dies(week4):
     reply, answered_after = kill_simulator_during(week4, "/timed_move_service", TimedMovement, "fwd", 10)
     assert answered_after < ANSWER_WITHIN_S
     assert reply.success is False
+
+
+def test_a_client_killed_mid_call_does_not_wedge_the_server(week4):
+    client = week4.start(["rosservice", "call", "/timed_move_service", "{movement_request: 'fwd', duration: 3}"],
+                         "doomed_client")
+    time.sleep(1.5)
+    assert client.running()
+    client.signal(signal.SIGKILL)
+    killed_at = time.monotonic()
+    call = rospy.ServiceProxy("/timed_move_service", TimedMovement)
+    while not call("left", 1).success:   # refused while the killed client's motion finishes, then served
+        assert time.monotonic() - killed_at < 10.0, "the server never served again after its client died"
+        time.sleep(0.2)
