@@ -6,6 +6,15 @@ rosrun started under it. Output goes to a log file that failing tests can show.
 import os
 import signal
 import subprocess
+from pathlib import Path
+
+CLOCK_TICKS_PER_S = os.sysconf("SC_CLK_TCK")
+
+
+def cpu_seconds(pid):
+    """User + system CPU seconds process `pid` has used so far (all its threads), from /proc."""
+    fields = Path("/proc/{}/stat".format(pid)).read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / CLOCK_TICKS_PER_S
 
 
 class RosProcess:
