@@ -257,3 +257,25 @@ def test_pause_reset_and_unpause_reach_the_node(api, sim):
 
 def test_failure_message_falls_back_to_the_reason():
     assert failure_message("DeleteModel", ProtectedModelError("no")) == "DeleteModel: Failure - no"
+
+
+def test_positions_beyond_a_kilometre_are_refused(api):
+    reply = spawn(api, "far", 1e300, 0.0)
+    assert (reply.success, reply.status_message) == (
+        False, "SpawnModel: Failure - initial_pose puts the model at (1e+300, 0); tb3_sim accepts positions within "
+               "±1000 m of the origin")
+    assert not set_state(api, "turtlebot3_waffle", 0.0, -2000.0).success
+
+
+def test_a_quaternion_that_overflows_is_refused(api):
+    message = ModelState(model_name="turtlebot3_waffle", pose=Pose())
+    message.pose.orientation.x, message.pose.orientation.y = 1e300, -1e300
+    message.pose.orientation.z, message.pose.orientation.w = 1e300, 1e300
+    reply = api.set_model_state(SetModelStateRequest(message))
+    assert (reply.success, reply.status_message) == (False, "SetModelState: Failure - pose does not give a finite pose")
+
+
+def test_absurd_twists_are_refused(api):
+    reply = set_state(api, "turtlebot3_waffle", 0.5, 0.5, vx=1e6)
+    assert (reply.success, reply.status_message) == (
+        False, "SetModelState: Failure - twist is beyond the sanity limits of ±100 m/s and ±100 rad/s")

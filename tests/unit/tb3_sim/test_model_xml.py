@@ -127,3 +127,20 @@ def test_bad_payloads_are_refused_with_the_reason(text, error, message):
 def test_urdf_service_refuses_sdf():
     with pytest.raises(NotUrdfError, match=r"root element is <sdf>, not <robot>"):
         parse_model_xml(SDF_BOX, urdf_only=True)
+
+
+@pytest.mark.parametrize("geometry, message", [
+    ("<box><size>1e-300 1e-300 1e-300</size></box>", r"<box><size> = 1e-300 m is outside \[0.001, 100\] m"),
+    ("<box><size>1 1 1e300</size></box>", r"<box><size> = 1e\+300 m is outside"),
+    ("<sphere><radius>0.0001</radius></sphere>", r"<sphere><radius> = 0.0001 m is outside"),
+])
+def test_degenerate_and_huge_sizes_are_refused(geometry, message):
+    with pytest.raises(ModelXmlError, match=message):
+        parse_model_xml(sdf_with(geometry))
+
+
+def test_absurd_mass_is_refused():
+    text = ("<robot name='r'><link name='a'><inertial><mass value='1e-300'/></inertial><collision><geometry>"
+            "<sphere radius='1'/></geometry></collision></link></robot>")
+    with pytest.raises(ModelXmlError, match=r"= 1e-300 kg is outside \[1e-06, 1e\+06\] kg"):
+        parse_model_xml(text)

@@ -16,8 +16,10 @@
 
 Spawn: `model_name` overrides the XML's name (the XML's name is used when it is empty); `initial_pose` (x, y,
 yaw; z, roll and pitch ignored) is composed with the pose in the XML, then with `reference_frame` (see
-reference_frames). A model overlapping the robot or another model is refused. Everything answers at once
-(Gazebo waits up to 10 s for a spawn or 60 s for a delete to take effect; here they take effect in the call).
+reference_frames). A model overlapping the robot or another model is refused, and so are positions beyond
+MAX_COORDINATE_M and set_model_state speeds beyond MAX_SPEED_MPS / MAX_YAW_RATE_RADPS (Box2D is float32).
+Everything answers at once (Gazebo waits up to 10 s for a spawn or 60 s for a delete to take effect; here they
+take effect in the call).
 All failures come back as success False and a status_message; `failure_message` is the one place that turns
 core errors into Gazebo's strings.
 """
@@ -46,6 +48,11 @@ SET_MODEL_STATE = "SetModelState: set model state done"
 GOT_WORLD_PROPERTIES = "GetWorldProperties: got properties"
 NOT_MODEL_XML = ("GazeboRosApiPlugin SpawnModel Failure: input model_xml not SDF or URDF, or cannot be "
                  "converted to Gazebo compatible format.")
+
+# Sanity limits of requests (Box2D works in float32): positions within 1 km, speeds as in set_model_state.
+MAX_COORDINATE_M = 1000.0
+MAX_SPEED_MPS = 100.0
+MAX_YAW_RATE_RADPS = 100.0
 
 # Gazebo's exact status messages for the failures it knows; other failures read "<Service>: Failure - <why>".
 GAZEBO_FAILURES = {
@@ -131,7 +138,7 @@ class GazeboApi:
             with self._sim.locked_world() as world:
                 frame = frame_state(world, request.reference_frame)
                 pose, _ = to_world(frame, compose(initial, spec.pose), Twist2D())
-                world.spawn_model(replace(spec, name=name, pose=pose))
+                world.spawn_model(replace(spec, name=name, pose=_within_world(pose, "initial_pose")))
         except SimError as error:
             return SpawnModelResponse(False, self._failed("SpawnModel", error))
         rospy.loginfo(f"spawned '{name}' at ({pose.x:.3f}, {pose.y:.3f}, yaw {pose.yaw:.3f})")
@@ -174,7 +181,7 @@ class GazeboApi:
             with self._sim.locked_world() as world:
                 world.get_model_state(state.model_name)
                 pose, twist = to_world(frame_state(world, state.reference_frame), pose, twist)
-                world.set_model_state(state.model_name, pose, twist)
+                world.set_model_state(state.model_name, _within_world(pose, "pose"), twist)
                 self._sim.teleported()
         except SimError as error:
             return SetModelStateResponse(False, self._failed("SetModelState", error))
@@ -205,7 +212,21 @@ def _finite_pose(message, field):
     return ros_messages.pose_from_message(message)
 
 
+def _within_world(pose, field):
+    """`pose` (world frame) if it is finite and within MAX_COORDINATE_M of the origin."""
+    if not all(math.isfinite(v) for v in pose):
+        raise BadRequestError(f"{field} does not give a finite pose")
+    if max(abs(pose.x), abs(pose.y)) > MAX_COORDINATE_M:
+        raise BadRequestError(f"{field} puts the model at ({pose.x:g}, {pose.y:g}); tb3_sim accepts positions "
+                              f"within ±{MAX_COORDINATE_M:g} m of the origin")
+    return pose
+
+
 def _finite_twist(message):
-    if not all(math.isfinite(v) for v in (message.linear.x, message.linear.y, message.angular.z)):
+    linear, angular = (message.linear.x, message.linear.y), message.angular.z
+    if not all(math.isfinite(v) for v in (*linear, angular)):
         raise BadRequestError("twist must hold finite numbers")
+    if max(abs(v) for v in linear) > MAX_SPEED_MPS or abs(angular) > MAX_YAW_RATE_RADPS:
+        raise BadRequestError(f"twist is beyond the sanity limits of ±{MAX_SPEED_MPS:g} m/s and "
+                              f"±{MAX_YAW_RATE_RADPS:g} rad/s")
     return ros_messages.twist_from_message(message)

@@ -12,7 +12,8 @@ A model must have exactly one collision shape. Units: metres, radians, kilograms
 2D simplifications, kept on purpose: z is ignored (objects rest on the floor; a box's height is its z size, a
 cylinder's its length, a sphere's its diameter); roll and pitch must be zero; the link and collision offsets are
 folded into the model pose, so the model origin reported by get_model_state is the collision shape's centre;
-a link without <inertial> weighs 1 kg, as in Gazebo.
+a link without <inertial> weighs 1 kg, as in Gazebo. Sizes must lie within [MIN_SHAPE_SIZE_M,
+MAX_SHAPE_SIZE_M] (1 mm to 100 m) and masses within [MIN_MASS_KG, MAX_MASS_KG]; Gazebo has no such limits.
 """
 
 import math
@@ -23,6 +24,12 @@ from tb3_sim.errors import ModelXmlError, NotModelXmlError, NotUrdfError
 from tb3_sim.geometry import Pose2D, wrap_angle
 from tb3_sim.shapes import Box, Cylinder
 from tb3_sim.world_file import DEFAULT_MODEL_MASS_KG, ModelSpec
+
+# Sanity limits: Box2D works in float32 and needs non-degenerate shapes; anything outside is refused.
+MIN_SHAPE_SIZE_M = 0.001
+MAX_SHAPE_SIZE_M = 100.0
+MIN_MASS_KG = 1e-6
+MAX_MASS_KG = 1e6
 
 SDF_ROOTS = ("sdf", "gazebo")
 URDF_ROOT = "robot"
@@ -139,7 +146,18 @@ def _urdf_origin(origin):
 def _mass(text, what):
     if text is None:
         return DEFAULT_MODEL_MASS_KG
-    return _numbers(text, 1, what, positive=True)[0]
+    mass = _numbers(text, 1, what, positive=True)[0]
+    if not MIN_MASS_KG <= mass <= MAX_MASS_KG:
+        raise ModelXmlError(f"{what} = {mass:g} kg is outside [{MIN_MASS_KG:g}, {MAX_MASS_KG:g}] kg")
+    return mass
+
+
+def _sizes(text, count, what):
+    values = _numbers(text, count, what, positive=True)
+    for value in values:
+        if not MIN_SHAPE_SIZE_M <= value <= MAX_SHAPE_SIZE_M:
+            raise ModelXmlError(f"{what} = {value:g} m is outside [{MIN_SHAPE_SIZE_M:g}, {MAX_SHAPE_SIZE_M:g}] m")
+    return values
 
 
 def _only_child(geometry, where):
@@ -151,26 +169,24 @@ def _only_child(geometry, where):
 def _sdf_geometry(geometry):
     shape = _only_child(geometry, "<collision>")
     if shape.tag == "box":
-        sx, sy, sz = _numbers(_text(shape, "size", None), 3, "<box><size>", positive=True)
-        return Box(sx, sy, sz)
+        return Box(*_sizes(_text(shape, "size", None), 3, "<box><size>"))
     if shape.tag == "cylinder":
-        radius = _numbers(_text(shape, "radius", None), 1, "<cylinder><radius>", positive=True)[0]
-        length = _numbers(_text(shape, "length", None), 1, "<cylinder><length>", positive=True)[0]
-        return Cylinder(radius, length)
+        radius = _sizes(_text(shape, "radius", None), 1, "<cylinder><radius>")[0]
+        return Cylinder(radius, _sizes(_text(shape, "length", None), 1, "<cylinder><length>")[0])
     if shape.tag == "sphere":
-        return Cylinder.sphere(_numbers(_text(shape, "radius", None), 1, "<sphere><radius>", positive=True)[0])
+        return Cylinder.sphere(_sizes(_text(shape, "radius", None), 1, "<sphere><radius>")[0])
     raise ModelXmlError(f"unsupported geometry <{shape.tag}>; use <box>, <cylinder> or <sphere>")
 
 
 def _urdf_geometry(geometry):
     shape = _only_child(geometry, "<collision>")
     if shape.tag == "box":
-        return Box(*_numbers(shape.get("size"), 3, "<box size>", positive=True))
+        return Box(*_sizes(shape.get("size"), 3, "<box size>"))
     if shape.tag == "cylinder":
-        radius = _numbers(shape.get("radius"), 1, "<cylinder radius>", positive=True)[0]
-        return Cylinder(radius, _numbers(shape.get("length"), 1, "<cylinder length>", positive=True)[0])
+        radius = _sizes(shape.get("radius"), 1, "<cylinder radius>")[0]
+        return Cylinder(radius, _sizes(shape.get("length"), 1, "<cylinder length>")[0])
     if shape.tag == "sphere":
-        return Cylinder.sphere(_numbers(shape.get("radius"), 1, "<sphere radius>", positive=True)[0])
+        return Cylinder.sphere(_sizes(shape.get("radius"), 1, "<sphere radius>")[0])
     raise ModelXmlError(f"unsupported geometry <{shape.tag}>; use <box>, <cylinder> or <sphere>")
 
 
