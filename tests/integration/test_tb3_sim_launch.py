@@ -6,6 +6,7 @@ import time
 from pathlib import Path
 
 import pytest
+import rosgraph
 import rospy
 from gazebo_msgs.srv import GetModelState, GetWorldProperties
 
@@ -34,7 +35,6 @@ def launch(ros_master, tmp_path):
 
 
 def _service_up(ros_master):
-    import rosgraph
     try:
         rosgraph.Master("/test", master_uri=ros_master.uri).lookupService("/gazebo/get_world_properties")
         return True
@@ -130,3 +130,16 @@ def test_a_broken_world_file_names_file_and_key(ros_master, tmp_path):
     assert result.returncode == 1
     assert f"{world}: models[0].size: expected a list of 3 numbers" in result.stdout
     assert "Traceback" not in result.stdout
+
+
+def test_a_restarted_roscore_gets_the_simulator_and_use_sim_time_back(launch, ros_master):
+    launch("tb3_sim", "tb3_sim.launch")
+    ros_master.restart_core()
+    wait_for_service(ros_master.uri, "/gazebo/get_world_properties", timeout_s=10)
+    assert wait_until(lambda: _param(ros_master, "/use_sim_time"), 10, "/use_sim_time on the new master")
+    assert model_names() == ["ground_plane", "turtlebot3_waffle"]
+
+
+def _param(ros_master, name):
+    master = rosgraph.Master("/test", master_uri=ros_master.uri)
+    return master.hasParam(name) and master.getParam(name)

@@ -15,7 +15,9 @@ Services: /gazebo/{reset_world, reset_simulation, pause_physics, unpause_physics
   latest laser rays; see renderer) to ~snapshot_path; an unwritable path fails the call with the reason.
 Parameters: see tb3_sim.config (~world, ~x_pos, ~y_pos, ~yaw, ~robot_name, ~seed, ~real_time_factor,
   ~lidar_sees_low_objects, ~clamp_command, ~paused, ~headless, ~snapshot_path, ~publish_static_tf).
-/use_sim_time is set to true before the node starts if it is absent, as gazebo_ros does.
+/use_sim_time is set to true before the node starts if it is absent, as gazebo_ros does. If roscore is
+restarted, the node registers everything again with the new master and sets /use_sim_time there too
+(master_reconnect).
 View: headless for now (the interactive window is a later step: it will paint with renderer.paint from a Scene
 copied under the lock, as ~snapshot does); ~headless is accepted for launch compatibility.
 
@@ -39,6 +41,7 @@ from pathlib import Path
 import rosgraph
 import rospkg
 import rospy
+from master_reconnect import keep_registered
 from gazebo_msgs.msg import ModelStates
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
@@ -235,6 +238,7 @@ def main():
             rospy.logfatal(f"tb3_sim: {error}")
             sys.exit(1)
         node = SimNode(config, world)
+        keep_registered(on_reregistered=ensure_use_sim_time)
         rospy.loginfo(f"tb3_sim: world '{world.description.name}', robot '{config.robot_name}' at "
                       f"({config.x_pos}, {config.y_pos}, yaw {config.yaw}), real_time_factor "
                       f"{config.real_time_factor:g}{', paused' if config.paused else ''}")
