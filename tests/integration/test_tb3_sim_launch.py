@@ -143,3 +143,22 @@ def test_a_restarted_roscore_gets_the_simulator_and_use_sim_time_back(launch, ro
 def _param(ros_master, name):
     master = rosgraph.Master("/test", master_uri=ros_master.uri)
     return master.hasParam(name) and master.getParam(name)
+
+
+def test_with_a_display_the_window_opens_and_physics_runs_beside_it(ros_master):
+    xvfb = ros_master.start(["Xvfb", "-displayfd", "1", "-screen", "0", "800x600x24", "-nolisten", "tcp"], "xvfb")
+    display = wait_until(lambda: xvfb.output().strip(), 20, "Xvfb to choose a display")
+    process = ros_master.start(["env", "-u", "QT_QPA_PLATFORM", f"DISPLAY=:{display}", "roslaunch", "--wait",
+                                "tb3_sim", "tb3_sim.launch", "world:=turtlebot3_world", "x_pos:=-2.0",
+                                "y_pos:=-0.5"], "tb3_sim_window")
+    try:
+        wait_for_service(ros_master.uri, "/gazebo/get_world_properties", timeout_s=30)
+        world_properties = rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)
+        wait_until(lambda: world_properties().rendering_enabled, 20, "the window to open")
+        first = world_properties()
+        wait_until(lambda: world_properties().sim_time > first.sim_time + 0.5, 10, "sim time to advance")
+    finally:
+        process.stop()
+        xvfb.stop()
+    wait_until(lambda: not _service_up(ros_master), 20, "the simulator to leave the master")
+    assert "Traceback" not in process.output()

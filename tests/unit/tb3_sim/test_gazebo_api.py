@@ -1,6 +1,5 @@
 """The /gazebo/* service handlers over a real World (no master): Gazebo's semantics and status strings."""
 import math
-from contextlib import contextmanager
 
 import pytest
 from gazebo_msgs.msg import ModelState
@@ -9,47 +8,17 @@ from gazebo_msgs.srv import (DeleteModelRequest, GetModelStateRequest, GetWorldP
 from geometry_msgs.msg import Pose, Quaternion
 from std_srvs.srv import EmptyRequest
 
-from tb3_sim.gazebo_api import GazeboApi, failure_message
 from tb3_sim.errors import ProtectedModelError
+from tb3_sim.gazebo_api import GazeboApi, failure_message
 from tb3_sim.geometry import Pose2D, yaw_to_quaternion
 from tb3_sim.model_xml import box_sdf
 from tb3_sim.world import World
 from tb3_sim.world_file import load_world, shipped_world_path
 
 
-class FakeSim:
-    """What GazeboApi needs from the node, without ROS: the world behind a (trivial) lock and the flags."""
-
-    rendering_enabled = False
-
-    def __init__(self, world):
-        self.world = world
-        self.paused = False
-        self.teleports = 0
-
-    @contextmanager
-    def locked_world(self):
-        yield self.world
-
-    def teleported(self):
-        self.teleports += 1
-
-    def pause(self):
-        self.paused = True
-
-    def unpause(self):
-        self.paused = False
-
-    def reset_world(self):
-        self.world.reset_world()
-
-    def reset_simulation(self):
-        self.world.reset_simulation()
-
-
 @pytest.fixture
-def sim():
-    return FakeSim(World(load_world(shipped_world_path("turtlebot3_world")), Pose2D(-2.0, -0.5, 0.0)))
+def sim(fake_sim):
+    return fake_sim(World(load_world(shipped_world_path("turtlebot3_world")), Pose2D(-2.0, -0.5, 0.0)))
 
 
 @pytest.fixture

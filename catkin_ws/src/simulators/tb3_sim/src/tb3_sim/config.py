@@ -11,7 +11,7 @@ Private parameters (all optional; see `ros_node` for what each one does):
     ~lidar_sees_low_objects  false      true: the scan also sees models lower than the 0.132 m scan plane
     ~clamp_command           false      true: clamp /cmd_vel to 0.26 m/s and 1.82 rad/s (Gazebo does not)
     ~paused                  false      start with physics paused (as gazebo's `paused` arg)
-    ~headless                false      true: never open a window (there is none without $DISPLAY anyway)
+    ~headless                false      true: never open a window; false: a window when $DISPLAY is set
     ~snapshot_path           "/tmp/tb3_sim.png"  where the ~snapshot service writes its PNG
     ~publish_static_tf       true       publish the Waffle's fixed joints on /tf_static
 """

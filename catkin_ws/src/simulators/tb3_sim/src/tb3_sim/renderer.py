@@ -60,6 +60,15 @@ class View:
         """Pixel (column, row) as floats of the world point (x, y)."""
         return (x - self.left) * self.scale, (self.top - y) * self.scale
 
+    def to_world(self, column, row):
+        """World point (x, y) of the pixel position (column, row)."""
+        return self.left + column / self.scale, self.top - row / self.scale
+
+    def contains(self, x, y):
+        """True if the world point (x, y) is inside the picture."""
+        column, row = self.to_pixel(x, y)
+        return 0 <= column <= self.width_px and 0 <= row <= self.height_px
+
     def point(self, x, y):
         return QPointF(*self.to_pixel(x, y))
 

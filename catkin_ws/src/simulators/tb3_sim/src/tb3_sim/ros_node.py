@@ -18,8 +18,10 @@ Parameters: see tb3_sim.config (~world, ~x_pos, ~y_pos, ~yaw, ~robot_name, ~seed
 /use_sim_time is set to true before the node starts if it is absent, as gazebo_ros does. If roscore is
 restarted, the node registers everything again with the new master and sets /use_sim_time there too
 (master_reconnect).
-View: headless for now (the interactive window is a later step: it will paint with renderer.paint from a Scene
-copied under the lock, as ~snapshot does); ~headless is accepted for launch compatibility.
+View: when $DISPLAY (or $WAYLAND_DISPLAY) is set and ~headless is false, a top-down window (see window) shows
+the world and offers the Gazebo box tool; physics then runs in a second thread while Qt owns the main thread.
+Closing the window leaves the simulation running headless, as closing gzclient leaves gzserver; Ctrl-C stops
+both. Without a display the node is headless with identical ROS behaviour.
 
 Threads: the main thread steps physics and publishes; rospy runs every callback in its own thread. One lock
 guards the world: callbacks change it only between two steps. Publishers write synchronously from the loop
@@ -31,6 +33,7 @@ third of the loop); its rospy time, used only for log stamps and warning throttl
 so is the pacing of steps (`~real_time_factor`).
 """
 
+import os
 import sys
 import threading
 import time
@@ -71,6 +74,7 @@ WARNING_THROTTLE_S = 5.0
 PAUSED_POLL_S = 0.05
 MASTER_RETRY_S = 1.0
 TRAIL_RATE_HZ = 30.0
+SHUTDOWN_CHECK_MS = 100
 
 
 class SimNode:
@@ -80,6 +84,7 @@ class SimNode:
         self.config = config
         self._world = world
         self._lock = threading.Lock()
+        self._window_open = threading.Event()
         self._running = threading.Event()
         if not config.paused:
             self._running.set()
@@ -111,7 +116,12 @@ class SimNode:
     @property
     def rendering_enabled(self):
         """True while a window draws the world (get_world_properties); headless runs answer False."""
-        return False
+        return self._window_open.is_set()
+
+    def scene(self):
+        """A Scene of the world now, with the latest published scan (for a window: no extra LiDAR sweeps)."""
+        with self._lock:
+            return scene_of(self._world, self._trail, self._outputs.recent_scan(self._world.time_s))
 
     @property
     def paused(self):
@@ -138,6 +148,13 @@ class SimNode:
             self._trail_schedule.reset(self._world.time_s)
             self._trail.clear()
 
+    def window_opened(self):
+        self._window_open.set()
+
+    def window_closed(self):
+        self._window_open.clear()
+        rospy.loginfo("tb3_sim: window closed; the simulation keeps running headless (Ctrl-C stops it)")
+
     def teleported(self):
         """Tell the sensors a model was moved by a service (call with the world locked)."""
         self._outputs.forget_motion()
@@ -152,7 +169,7 @@ class SimNode:
             self._world.robot.set_command(linear, angular)
 
     def _on_snapshot(self, _request):
-        from tb3_sim.renderer import save_png  # Qt is loaded on the first snapshot only
+        from tb3_sim.renderer import save_png  # Qt is loaded on the first snapshot only (or by the window)
         with self._lock:
             scene = scene_of(self._world, self._trail, self._outputs.scan_for_view(self._world))
         try:
@@ -178,6 +195,32 @@ class SimNode:
             delay_s = self._pacer.delay(now_s, time.monotonic())
             if delay_s:
                 time.sleep(delay_s)
+
+
+def run_with_window(node):
+    """Show the window in the main thread (Qt's rule) and step physics in another until ROS shuts down."""
+    from PyQt5.QtCore import QTimer
+    from PyQt5.QtWidgets import QApplication
+
+    from tb3_sim.box_tool import BoxTool
+    from tb3_sim.window import SimWindow
+
+    app = QApplication.instance() or QApplication([sys.argv[0]])
+    window = SimWindow(node.scene, BoxTool(node), on_close=node.window_closed, log=rospy.loginfo)
+    physics = threading.Thread(target=node.spin, name="physics", daemon=True)
+    shutdown_check = QTimer()
+    shutdown_check.timeout.connect(lambda: rospy.is_shutdown() and app.quit())
+    shutdown_check.start(SHUTDOWN_CHECK_MS)
+    node.window_opened()
+    window.show()
+    physics.start()
+    app.exec_()
+    while physics.is_alive():
+        physics.join(PAUSED_POLL_S)
+
+
+def has_display():
+    return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
 
 
 def _synchronous_publisher(name, message_class):
@@ -242,6 +285,9 @@ def main():
         rospy.loginfo(f"tb3_sim: world '{world.description.name}', robot '{config.robot_name}' at "
                       f"({config.x_pos}, {config.y_pos}, yaw {config.yaw}), real_time_factor "
                       f"{config.real_time_factor:g}{', paused' if config.paused else ''}")
-        node.spin()
+        if not config.headless and has_display():
+            run_with_window(node)
+        else:
+            node.spin()
     except (KeyboardInterrupt, rospy.ROSInterruptException):
         pass

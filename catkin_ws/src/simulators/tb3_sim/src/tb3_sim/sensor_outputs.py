@@ -59,13 +59,17 @@ class SensorOutputs:
         """Forget the IMU's previous velocity, so a teleport does not show up as an acceleration spike."""
         self._imu.reset()
 
-    def scan_for_view(self, world):
-        """The latest published scan if it is at most two scan periods old, otherwise a fresh one (which draws
-        from the LiDAR's noise stream, as a published scan would)."""
+    def recent_scan(self, now_s):
+        """The latest published scan if it is at most two scan periods old at `now_s`, else None."""
         latest = self.latest_scan
-        if latest is not None and world.time_s - latest.time_s <= 2.0 / LIDAR_UPDATE_RATE_HZ:
+        if latest is not None and 0.0 <= now_s - latest.time_s <= 2.0 / LIDAR_UPDATE_RATE_HZ:
             return latest
-        return world.scan()
+        return None
+
+    def scan_for_view(self, world):
+        """The recent published scan, or a fresh one (which draws from the LiDAR's noise stream, as a published
+        scan would) when nobody subscribes to /scan."""
+        return self.recent_scan(world.time_s) or world.scan()
 
     def collect(self, world):
         """Messages due now that the world has stepped to `world.time_s`, as [(publisher, message)]."""
