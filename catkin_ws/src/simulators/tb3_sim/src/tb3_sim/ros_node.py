@@ -23,8 +23,8 @@ the world and offers the Gazebo box tool; physics then runs in a second thread w
 Closing the window leaves the simulation running headless, as closing gzclient leaves gzserver; Ctrl-C stops
 both. Without a display the node is headless with identical ROS behaviour.
 
-Threads: the main thread steps physics and publishes; rospy runs every callback in its own thread. One lock
-guards the world: callbacks change it only between two steps. Publishers write synchronously from the loop
+Threads: the main thread (with a window: a "physics" thread) steps physics and publishes; rospy runs every
+callback in its own thread. One lock guards the world: callbacks change it only between two steps. Publishers write synchronously from the loop
 thread (see `_synchronous_publisher`).
 
 Time: physics runs in simulated time and every stamp is the world's time. The node is the clock, so it does not
@@ -243,7 +243,7 @@ def worlds_dir():
 
 
 def ensure_use_sim_time():
-    """Set /use_sim_time to true if no one has set it, before this node's rospy time starts.
+    """Set /use_sim_time to true on the master if no one has set it (launch files set it themselves).
 
     Waits for the master like rospy.init_node does, so `rosrun` before `roscore` just waits.
     """
