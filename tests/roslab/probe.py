@@ -60,11 +60,12 @@ class TopicProbe:
         time.sleep(duration_s)
         return self.take(topic)
 
-    def wait_for_message(self, topic, timeout_s=20.0, predicate=lambda msg: True):
-        """The first message on `topic` (subscribed already) satisfying `predicate`, as a plain dict."""
+    def wait_for_message(self, topic, timeout_s=20.0, predicate=lambda msg: True, interval_s=0.1):
+        """The first message on `topic` (subscribed already) satisfying `predicate`, as a plain dict; the
+        probe is asked every `interval_s` (shorten it for a fast topic when many waits add up)."""
         def matching():
             return next((entry["msg"] for entry in self.take(topic) if predicate(entry["msg"])), None)
-        return wait_until(matching, timeout_s, "a matching message on " + topic, interval_s=0.1)
+        return wait_until(matching, timeout_s, "a matching message on " + topic, interval_s=interval_s)
 
     def publish(self, topic, msg_type, msg, wait_s=5.0):
         """Publish one message given as a dict (waits up to `wait_s` for a subscriber to connect first)."""
