@@ -151,6 +151,17 @@ def test_nan_cmd_vel_is_ignored_with_a_warning(make_sim, log):
     assert 'only finite numbers are allowed' in warnings[0]
 
 
+@pytest.mark.parametrize('vx, vy, w', [(1e39, 0.0, 0.0), (0.0, -1e300, 0.0), (0.0, 0.0, 1e39),
+                                       (3e38, 3e38, 0.0)])
+def test_cmd_vel_beyond_float32_is_ignored_so_poses_stay_finite(make_sim, log, vx, vy, w):
+    sim = make_sim()
+    sim.step(0.0)
+    sim.cmd_vel('turtle1', 1.0, 0.0, 0.0, 0.0)
+    sim.cmd_vel('turtle1', vx, vy, w, 0.0)
+    pose = dict(sim.step(0.016))['turtle1'].pose
+    assert pose.linear_velocity == 1.0 and pose.angular_velocity == 0.0
+    assert log.texts(LogLevel.WARN)[0].startswith('Ignoring cmd_vel for turtle [turtle1]')
+
 def test_non_finite_spawn_fails_without_moving_the_counter(make_sim):
     sim = make_sim()
     with pytest.raises(NonFiniteValueError) as error:

@@ -11,6 +11,7 @@ Contract for the ROS adapter:
   and teleports are ignored with a WARN line (those services cannot fail in the original), and
   spawn raises NonFiniteValueError (there is no name to return).
 """
+import math
 import random
 
 from .background import read_background
@@ -149,9 +150,12 @@ class TurtleSim:
     def cmd_vel(self, name, vx, vy, w, now):
         """A Twist on <name>/cmd_vel: linear.x, linear.y (m/s), angular.z (rad/s) at wall time
         `now` (s). Non-finite values: WARN logged, message ignored (the previous command and
-        its timeout stay). Raises UnknownTurtleError for a name that does not exist."""
+        its timeout stay). So are values, or a speed magnitude, beyond float32 (|v| > 3.4e38):
+        the published float32 pose would carry inf where the original publishes it (found by
+        fuzzing). Raises UnknownTurtleError for a name that does not exist."""
         turtle = self._turtle(name)
-        if not all_finite(vx, vy, w):
+        if not all_finite(as_float32(vx), as_float32(vy), as_float32(w),
+                          as_float32(math.hypot(vx, vy))):
             self._log(LogLevel.WARN,
                       NON_FINITE_TEXT % ('cmd_vel', name, 'linear.x, linear.y, angular.z'))
             return
