@@ -11,9 +11,42 @@ from pathlib import Path
 CLOCK_TICKS_PER_S = os.sysconf("SC_CLK_TCK")
 
 
+def _stat_fields(pid):
+    """Fields of /proc/<pid>/stat after the command name (index 1 = parent pid, 19 = start time)."""
+    return Path("/proc/{}/stat".format(pid)).read_text().rsplit(")", 1)[1].split()
+
+
+def descendants(pid):
+    """{(pid, start time)} of every living process descended from `pid`, from /proc. The start time tells
+    a process apart from a later one that reuses its pid."""
+    children_of = {}
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                fields = _stat_fields(entry.name)
+            except OSError:
+                continue
+            children_of.setdefault(int(fields[1]), []).append((int(entry.name), fields[19]))
+    found, frontier = set(), [pid]
+    while frontier:
+        children = children_of.get(frontier.pop(), [])
+        found.update(children)
+        frontier.extend(child for child, _ in children)
+    return found
+
+
+def kill_if_alive(pid, started):
+    """SIGKILL `pid` if it is still the process that started at `started`."""
+    try:
+        if _stat_fields(pid)[19] == started:
+            os.kill(pid, signal.SIGKILL)
+    except (OSError, IndexError):
+        pass
+
+
 def cpu_seconds(pid):
     """User + system CPU seconds process `pid` has used so far (all its threads), from /proc."""
-    fields = Path("/proc/{}/stat".format(pid)).read_text().rsplit(")", 1)[1].split()
+    fields = _stat_fields(pid)
     return (int(fields[11]) + int(fields[12])) / CLOCK_TICKS_PER_S
 
 
@@ -48,15 +81,21 @@ class RosProcess:
         except ProcessLookupError:
             pass
 
-    def stop(self, grace_s=10.0):
-        """SIGINT (what Ctrl-C sends, so nodes run their shutdown hooks), then SIGKILL after `grace_s`."""
+    def stop(self, grace_s=20.0):
+        """SIGINT (what Ctrl-C sends, so nodes run their shutdown hooks), then SIGKILL after `grace_s`.
+
+        roslaunch puts each node in a session of its own, so a node that outlives a killed roslaunch would
+        escape the process group: every descendant seen before or during the shutdown is killed too."""
+        offspring = set(descendants(self.popen.pid))
         if self.running():
             self.signal(signal.SIGINT)
             try:
                 self.popen.wait(timeout=grace_s)
             except subprocess.TimeoutExpired:
-                pass
+                offspring.update(descendants(self.popen.pid))
         self.signal(signal.SIGKILL)
         self.popen.wait()
+        for pid, started in offspring:
+            kill_if_alive(pid, started)
         self._log.close()
         return self.popen.returncode
