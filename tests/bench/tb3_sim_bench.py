@@ -7,46 +7,28 @@ Measures, each on a private roscore with the simulator started by its launch fil
 - CPU of the simulator process at factor 1, same subscriptions, as % of one core (target <= 15%);
 - one 360-beam scan in turtlebot3_world, from tb3_sim.benchmark (target <= 0.5 ms);
 - wall time from `roslaunch` to the first /scan message (target <= 3 s).
-`run()` returns the rows [(name, value, unit, target, comparison)] for scripts/bench's table.
+`run()` returns the rows [(name, value, unit, target, comparison)] for scripts/bench's table
+(`scripts/bench tb3_sim_bench` runs only these).
 """
-import os
 import sys
 import tempfile
 import time
-import xmlrpc.client
 from pathlib import Path
-
-import rosgraph
-import rospy
-from gazebo_msgs.srv import GetWorldProperties
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from roslab import RosMaster, wait_for_service, wait_until  # noqa: E402  (needs the sys.path entry above)
+from roslab.graph import node_pid  # noqa: E402
+from roslab.processes import cpu_seconds  # noqa: E402
 from tb3_sim.benchmark import bench_scan  # noqa: E402
 
 MEASURE_S = 10.0
 WORLD_ARGS = ("world:=turtlebot3_world", "x_pos:=-2.0", "y_pos:=-0.5", "gui:=false")
-CLOCK_TICKS_PER_S = os.sysconf("SC_CLK_TCK")
-
-
-def _sim_time(master):
-    os.environ["ROS_MASTER_URI"] = master.uri
-    return rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)().sim_time
-
-
-def _node_pid(master, node="/gazebo"):
-    uri = rosgraph.Master("/bench", master_uri=master.uri).lookupNode(node)
-    return xmlrpc.client.ServerProxy(uri).getPid("/bench")[2]
-
-
-def _cpu_seconds(pid):
-    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
-    return (int(fields[11]) + int(fields[12])) / CLOCK_TICKS_PER_S
 
 
 def _with_simulator(factor, measure):
-    """Start roscore + the simulator at `factor` with a probe on /scan and /odom; return measure(master)."""
+    """Start roscore + the simulator at `factor` with a probe on /scan and /odom; return measure(master, probe).
+    The probe starts after the launch file set /use_sim_time, so `probe.now()` is sim time."""
     master = RosMaster(Path(tempfile.mkdtemp(prefix="tb3_bench_")))
     try:
         master.roslaunch("tb3_sim", "tb3_sim.launch", f"real_time_factor:={factor}", *WORLD_ARGS)
@@ -55,27 +37,27 @@ def _with_simulator(factor, measure):
         probe.subscribe("/scan", "sensor_msgs/LaserScan")
         probe.subscribe("/odom", "nav_msgs/Odometry")
         probe.wait_for_message("/scan", 30)
-        return measure(master)
+        return measure(master, probe)
     finally:
         master.shutdown()
 
 
 def real_time_factor_unpaced():
     """Sim seconds per wall second at ~real_time_factor:=0 with /scan and /odom subscribed."""
-    def measure(master):
-        sim_start, wall_start = _sim_time(master), time.monotonic()
+    def measure(_master, probe):
+        sim_start, wall_start = probe.now(), time.monotonic()
         time.sleep(MEASURE_S)
-        return (_sim_time(master) - sim_start) / (time.monotonic() - wall_start)
+        return (probe.now() - sim_start) / (time.monotonic() - wall_start)
     return _with_simulator(0, measure)
 
 
 def cpu_percent_at_real_time():
     """CPU of the simulator process at factor 1, % of one core."""
-    def measure(master):
-        pid = _node_pid(master)
-        cpu_start, wall_start = _cpu_seconds(pid), time.monotonic()
+    def measure(master, _probe):
+        pid = node_pid(master.uri, "/gazebo")
+        cpu_start, wall_start = cpu_seconds(pid), time.monotonic()
         time.sleep(MEASURE_S)
-        return 100.0 * (_cpu_seconds(pid) - cpu_start) / (time.monotonic() - wall_start)
+        return 100.0 * (cpu_seconds(pid) - cpu_start) / (time.monotonic() - wall_start)
     return _with_simulator(1, measure)
 
 
@@ -105,12 +87,6 @@ def run():
     ]
 
 
-def main():
-    print(f"{'measure':<70} {'value':>10}  {'target':<16} ok")
-    for name, value, unit, target, comparison in run():
-        ok = value >= target if comparison == ">=" else value <= target
-        print(f"{name:<70} {value:>10.3f}  {comparison} {target:g} {unit:<10} {'yes' if ok else 'NO'}")
-
-
 if __name__ == "__main__":
-    main()
+    from report import print_table
+    print_table(run())
