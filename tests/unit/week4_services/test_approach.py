@@ -2,7 +2,7 @@
 command (like the simulated Waffle), a wall at a known distance, sweeps at 5 Hz and odometry at 30 Hz."""
 import pytest
 
-from week4_services.approach import SAFETY_TRAVEL_M, ApproachController, Outcome
+from week4_services.approach import SAFETY_TRAVEL_M, TIME_LIMIT_S, ApproachController, Outcome
 from week4_services.requests import approach
 
 ODOM_DT = 1.0 / 30
@@ -56,3 +56,14 @@ def test_nothing_ahead_stops_at_the_safety_limit():
 def test_no_motion_before_the_first_sweep():
     controller = ApproachController(approach(0.4, 0.1))
     assert controller.on_odometry(0.0, 0.0).velocity == 0.0
+
+
+def test_a_valid_crawl_ends_at_the_time_limit():
+    controller = ApproachController(approach(0.4, 1e-6))
+    controller.on_sweep(1.3)
+    controller.on_clock(TIME_LIMIT_S - 0.1)
+    assert controller.on_odometry(0.0, 1e-6) == (1e-6, Outcome.DRIVING)
+    controller.on_clock(TIME_LIMIT_S)
+    assert controller.on_odometry(0.0, 1e-6) == (0.0, Outcome.TIME_LIMIT)
+    controller.on_sweep(1.3)
+    assert controller.on_odometry(0.0, 0.0).outcome is Outcome.TIME_LIMIT

@@ -5,13 +5,14 @@ Drives forwards at approach_velocity until the closest object ahead (LiDAR arc o
 straight ahead) is approach_distance away, stops, and replies with the distance the LiDAR measures once the
 robot is still. Refused with a clear message and no motion: velocity outside (0, 0.26] m/s, distance outside
 [0.2, 3.5) m, NaN, or a second request while one is running (requests are never interleaved).
-Nothing ahead: drives at most 3.5 m (the LiDAR's range) and says so. /odom or /scan silent for 1 s (the
-simulator died): stops and replies with the failure.
+Nothing ahead: drives at most 3.5 m (the LiDAR's range) and says so. Still driving after 60 s (a valid but
+tiny velocity, or the robot blocked by something too low for the LiDAR): stops and says so. /odom or /scan
+silent for 1 s (the simulator died): stops and replies with the failure.
 """
 import rospy
 from tuos_msgs.srv import Approach, ApproachResponse
 
-from week4_services.approach import ApproachController, Outcome
+from week4_services.approach import TIME_LIMIT_S, ApproachController, Outcome
 from week4_services.requests import InvalidRequest, approach
 from tb3_client.robot import Robot, RobotError
 
@@ -49,6 +50,7 @@ class ApproachServer:
         self.robot.wait_for_new_sweep()
         controller = ApproachController(plan)
         start = self.robot.odom
+        start_time = rospy.get_rostime()
         sweeps_seen = None
         rospy.loginfo("Approaching at %.2f m/s to stop %.2f m from the object ahead...",
                       plan.velocity, plan.distance)
@@ -57,6 +59,7 @@ class ApproachServer:
                 sweeps_seen = self.robot.scan_count
                 ahead = self.robot.object_ahead()
                 controller.on_sweep(ahead.distance if ahead else None)
+            controller.on_clock((rospy.get_rostime() - start_time).to_sec())
             step = controller.on_odometry(self.robot.travelled_from(start), self.robot.forward_speed())
             self.robot.drive(step.velocity, 0.0)
             if step.outcome is not Outcome.DRIVING:
@@ -71,6 +74,9 @@ class ApproachServer:
             return "Stopped: {} (requested {:.2f} m).".format(seen, plan.distance)
         if outcome is Outcome.ALREADY_THERE:
             return "Did not move: {}, already within the requested {:.2f} m.".format(seen, plan.distance)
+        if outcome is Outcome.TIME_LIMIT:
+            return "Stopped after the {:.0f} s time limit: {} (requested {:.2f} m).".format(
+                TIME_LIMIT_S, seen, plan.distance)
         return "Stopped after the 3.5 m safety limit with no object in range ahead: {}.".format(seen)
 
 

@@ -5,13 +5,19 @@ minus how far the robot has travelled since that sweep. The stop is commanded ea
 v^2 / (2 * DECELERATION_MPS2), because a TurtleBot3 does not stop instantly (the Gazebo drive ramps the wheel
 speed at about 1 m/s^2). Safety limit: when nothing is seen ahead, the robot drives at most SAFETY_TRAVEL_M
 (the LiDAR's 3.5 m range: anything it could have driven into would have been seen by then) and stops.
-Pure logic: the caller feeds sweeps and odometry and publishes the velocity it returns.
+Time limit: an approach ends after TIME_LIMIT_S of driving whatever it has reached, so that a valid but tiny
+velocity (1e-6 m/s passes the (0, 0.26] check) or a robot pushing against something the LiDAR cannot see
+never holds the server for ever (found by fuzzing).
+Pure logic: the caller feeds sweeps, odometry and the elapsed time and publishes the velocity it returns.
 """
 import enum
 from typing import NamedTuple, Optional
 
+from tb3_client.motion import MAX_MOTION_S
+
 DECELERATION_MPS2 = 1.0
 SAFETY_TRAVEL_M = 3.5
+TIME_LIMIT_S = MAX_MOTION_S
 
 
 class Outcome(enum.Enum):
@@ -19,6 +25,7 @@ class Outcome(enum.Enum):
     ARRIVED = "arrived"
     ALREADY_THERE = "already_there"
     NOTHING_AHEAD = "nothing_ahead"
+    TIME_LIMIT = "time_limit"
 
 
 class Step(NamedTuple):
@@ -29,7 +36,8 @@ class Step(NamedTuple):
 
 
 class ApproachController:
-    """One approach. Call `on_sweep` for every LiDAR sweep and `on_odometry` for every odometry update."""
+    """One approach. Call `on_sweep` for every LiDAR sweep, `on_clock` with the time since the start and
+    `on_odometry` for every odometry update."""
 
     def __init__(self, plan):
         self.plan = plan
@@ -46,6 +54,11 @@ class ApproachController:
         self._travelled_at_sweep = self._travelled
         if self._sweeps == 1 and closest_distance is not None and closest_distance <= self.plan.distance:
             self.outcome = Outcome.ALREADY_THERE
+
+    def on_clock(self, elapsed_s: float):
+        """Seconds (rospy time) since the approach started: past TIME_LIMIT_S the approach ends."""
+        if self.outcome is Outcome.DRIVING and elapsed_s >= TIME_LIMIT_S:
+            self.outcome = Outcome.TIME_LIMIT
 
     def on_odometry(self, travelled_m: float, speed_mps: float) -> Step:
         """Distance driven since the start (m) and current forward speed (m/s) -> the command to publish."""
