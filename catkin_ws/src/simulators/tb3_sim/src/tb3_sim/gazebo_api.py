@@ -159,11 +159,11 @@ class GazeboApi:
                 state = world.get_model_state(request.model_name)
                 frame = frame_state(world, request.relative_entity_name)
                 now_s = world.time_s
+                calls = self._get_model_state_calls.get(request.model_name, 0) + 1
+                self._get_model_state_calls[request.model_name] = calls
         except SimError as error:
             response.success, response.status_message = False, self._failed("GetModelState", error)
             return response
-        calls = self._get_model_state_calls.get(request.model_name, 0) + 1
-        self._get_model_state_calls[request.model_name] = calls
         response.header.seq = calls
         response.header.stamp = ros_messages.stamp(now_s)
         response.header.frame_id = request.relative_entity_name
