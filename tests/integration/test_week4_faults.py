@@ -1,14 +1,16 @@
-"""A Week 4 server whose simulator dies mid-request answers with a failure within 2 s instead of hanging."""
+"""Faults under the Week 4 demo: a simulator that dies mid-request gets a failure reply within 2 s instead of
+a hang; roslaunch respawns it and the servers serve again; a client killed mid-call wedges nothing."""
 import os
 import signal
 import threading
 import time
 
 import pytest
+import rosgraph
 import rospy
 from tuos_msgs.srv import Approach, TimedMovement
 
-from roslab import wait_for_service, wait_for_topic
+from roslab import wait_for_service, wait_for_topic, wait_until
 from roslab.graph import node_pid
 
 ANSWER_WITHIN_S = 2.0
@@ -62,6 +64,22 @@ def test_timed_move_fails_within_2_s_when_the_simulator_dies(week4):
     reply, answered_after = kill_simulator_during(week4, "/timed_move_service", TimedMovement, "fwd", 10)
     assert answered_after < ANSWER_WITHIN_S
     assert reply.success is False
+
+
+def test_the_respawned_simulator_is_served_again(week4):
+    killed_pid = node_pid(week4.uri, "/gazebo")
+    os.kill(killed_pid, signal.SIGKILL)
+    wait_until(lambda: respawned(week4.uri, killed_pid), 30, "roslaunch to respawn the simulator")
+    call = rospy.ServiceProxy("/timed_move_service", TimedMovement)
+    wait_until(lambda: call("left", 1).success, 30, "a successful timed move on the respawned simulator",
+               interval_s=0.5)
+
+
+def respawned(master_uri, old_pid):
+    try:
+        return node_pid(master_uri, "/gazebo") != old_pid
+    except (OSError, rosgraph.MasterError):
+        return False
 
 
 def test_a_client_killed_mid_call_does_not_wedge_the_server(week4):
