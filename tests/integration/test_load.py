@@ -1,7 +1,8 @@
 """Load (issue 8, item 3): 20 concurrent clients x 100 calls on add_two_int (the Python server, and the C++
-one) and on /gazebo/get_model_state while tb3_sim runs at real time (see roslab.load). Every call must succeed with the right answer, and /odom
-and /scan must keep their rates meanwhile, measured from their header stamps in sim time with no message
-missing. Latencies are not asserted here: tests/bench/load_bench.py reports them (scripts/bench)."""
+one) and on /gazebo/get_model_state while tb3_sim runs at real time (see roslab.load). Every call must
+succeed with the right answer, and /odom and /scan must keep their rates meanwhile, measured from their
+header stamps in sim time with no message missing. Latencies are not asserted here:
+tests/bench/load_bench.py reports them (scripts/bench)."""
 import pytest
 
 from roslab.load import CALLS, CLIENTS, EXPECTED_RATES_HZ, LOADS, LoadGraph
