@@ -3,13 +3,8 @@
 import rospy
 from std_srvs.srv import Empty
 
-from tb3_client.waiting import wait_politely
+from tb3_client.waiting import call_once
 
 if __name__ == "__main__":
     rospy.init_node("service_client")
-    try:
-        wait_politely("/moving")
-        rospy.ServiceProxy("/moving", Empty)()
-        rospy.loginfo("the robot is moving")
-    except (rospy.ROSInterruptException, rospy.ServiceException) as error:
-        rospy.logerr("could not call /moving: %s", error)
+    call_once("/moving", Empty, "the robot is moving")

@@ -3,13 +3,8 @@
 import rospy
 from std_srvs.srv import Empty
 
-from tb3_client.waiting import wait_politely
+from tb3_client.waiting import call_once
 
 if __name__ == "__main__":
     rospy.init_node("stop_client")
-    try:
-        wait_politely("/stop")
-        rospy.ServiceProxy("/stop", Empty)()
-        rospy.loginfo("the robot is stopped")
-    except (rospy.ROSInterruptException, rospy.ServiceException) as error:
-        rospy.logerr("could not call /stop: %s", error)
+    call_once("/stop", Empty, "the robot is stopped")

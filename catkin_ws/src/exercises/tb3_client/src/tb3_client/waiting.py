@@ -15,3 +15,14 @@ def wait_politely(service_name):
         except rospy.ROSException:
             rospy.loginfo("service %s not available, waiting again...", service_name)
     raise rospy.ROSInterruptException("shut down while waiting for " + service_name)
+
+
+def call_once(service_name, service_class, done_message):
+    """Wait politely for `service_name`, call it once with an empty request and log `done_message`; a
+    failed call or Ctrl-C while waiting is logged as an error instead of a traceback."""
+    try:
+        wait_politely(service_name)
+        rospy.ServiceProxy(service_name, service_class)()
+        rospy.loginfo(done_message)
+    except (rospy.ROSInterruptException, rospy.ServiceException) as error:
+        rospy.logerr("could not call %s: %s", service_name, error)
