@@ -27,6 +27,7 @@ import time
 
 import rospkg
 import rospy
+from master_reconnect import keep_registered
 from std_srvs.srv import Empty, EmptyResponse
 
 from .constants import BACKGROUND_PARAMS, DEFAULT_BACKGROUND, TICK_INTERVAL_MS
@@ -272,6 +273,7 @@ def main():
         return 2
     with_window = window_wanted(headless)
     node = TurtleSimNode(stop)
+    keep_registered()
     try:
         if with_window:
             run_window(node.tick, node.next_frame, rospy.myargv()[:1])
