@@ -16,10 +16,7 @@ class MoveServer:
 
     def callback(self, request):
         try:
-            motion = move_motion(request.direction, request.velocity, request.time)
-            with self.robot.exclusive():
-                self.robot.drive(motion.linear, motion.angular)
-                self.robot.wait(motion.duration_s)
+            self.robot.perform(move_motion(request.direction, request.velocity, request.time))
         except (InvalidRequest, RobotError) as error:
             rospy.logwarn("Refused: %s", error)
             return MoveResponse(False)

@@ -16,11 +16,9 @@ class TurnServer:
     def callback(self, request):
         try:
             motion = turn_motion(request.direction, request.angular_velocity, request.time)
-            with self.robot.exclusive():
-                rospy.loginfo("Turning %s at %.2f rad/s for %d s", request.direction, request.angular_velocity,
-                              request.time)
-                self.robot.drive(motion.linear, motion.angular)
-                self.robot.wait(motion.duration_s)
+            rospy.loginfo("Turning %s at %.2f rad/s for %d s", request.direction, request.angular_velocity,
+                          request.time)
+            self.robot.perform(motion)
         except (InvalidRequest, RobotError) as error:
             rospy.logwarn("Refused: %s", error)
             return TurnResponse(False)

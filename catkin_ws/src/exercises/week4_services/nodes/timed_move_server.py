@@ -29,10 +29,8 @@ class TimedMoveServer:
         try:
             motion = timed_movement(request.movement_request, request.duration,
                                     self.linear_speed, self.angular_speed)
-            with self.robot.exclusive():
-                rospy.loginfo("Moving '%s' for %d seconds...", request.movement_request.strip(), request.duration)
-                self.robot.drive(motion.linear, motion.angular)
-                self.robot.wait(motion.duration_s)
+            rospy.loginfo("Moving '%s' for %d seconds...", request.movement_request.strip(), request.duration)
+            self.robot.perform(motion)
         except (InvalidRequest, RobotError) as error:
             rospy.logerr("Request refused: %s", error)
             return TimedMovementResponse(False)

@@ -106,6 +106,13 @@ class Robot:
                 raise RobotLost("no {} from the robot for {:.1f} s: is the simulator running?".format(
                     name, STALE_AFTER_WALL_S))
 
+    def perform(self, motion):
+        """Hold the velocities of `motion` (tb3_client.motion.Motion) for its duration under exclusive(),
+        then stop; RobotBusy or RobotLost when that cannot be done."""
+        with self.exclusive():
+            self.drive(motion.linear, motion.angular)
+            self.wait(motion.duration_s)
+
     def wait(self, duration_s, need_scan=False):
         """Wait `duration_s` seconds of rospy time, raising RobotLost if the robot goes quiet meanwhile."""
         end = rospy.get_rostime() + rospy.Duration.from_sec(duration_s)
