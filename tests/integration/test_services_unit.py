@@ -1,12 +1,14 @@
 """The ROS 2 Services unit, ported to ROS 1, against tb3_sim (empty world, sim time at 3x): each service has
 the course's name and type, produces the specified motion measured on /odom, and refuses bad requests
 without motion."""
+import math
 import subprocess
 import time
 
 import pytest
 import rospy
 from custom_interfaces.srv import Move, MyCustomServiceMessage, StringServiceMessage
+from gazebo_msgs.srv import DeleteModel
 from services_quiz_srv.srv import Turn
 from std_srvs.srv import Empty, SetBool
 
@@ -158,6 +160,20 @@ def test_fruit_service_reports_and_publishes(robot):
     assert robot.probe.wait_for_message("/fruit_detection")["data"] == reply.message
     unknown = rospy.ServiceProxy("/detect_fruit_service", StringServiceMessage)("kiwi")
     assert unknown.success is True and unknown.message.startswith("unknown fruit 'kiwi'")
+
+
+def test_fruit_service_reflects_a_box_placed_ahead(ros_master, robot):
+    x, y, yaw = robot.pose()
+    ahead_x, ahead_y = x + 1.2 * math.cos(yaw), y + 1.2 * math.sin(yaw)
+    code, output = run(ros_master, "rosrun", "tb3_sim", "spawn_box", "fruit_box", str(ahead_x), str(ahead_y),
+                       "--size", "0.3", "--yaw", str(yaw))   # a face squarely towards the robot
+    assert code == 0, output
+    time.sleep(0.5)   # the next LiDAR sweep (5 Hz sim time) sees the box
+    reply = rospy.ServiceProxy("/detect_fruit_service", StringServiceMessage)("banana")
+    assert reply.success is True
+    seen = float(reply.message.split("something ")[1].split(" m ahead")[0])
+    assert seen == pytest.approx(1.2 - 0.15 + 0.064, abs=0.05), reply.message
+    rospy.ServiceProxy("/gazebo/delete_model", DeleteModel)("fruit_box")
 
 
 def test_parameter_clients_change_what_the_node_logs(ros_master, robot):
