@@ -8,7 +8,9 @@ Subscribes: `cmd_vel` (geometry_msgs/Twist, queue 1; linear.x and angular.z held
 Publishes: /clock every physics step (5 ms of sim time); `odom` (nav_msgs/Odometry), /tf odom -> base_footprint
   and `joint_states` at 30 Hz; `scan` (sensor_msgs/LaserScan) at 5 Hz; `imu` (sensor_msgs/Imu) at 100 Hz;
   /gazebo/model_states at 100 Hz (the last three only while subscribed); /tf_static (latched) with the Waffle's
-  fixed joints unless ~publish_static_tf is false. All rates are in simulated time (see sensor_outputs).
+  fixed joints unless ~publish_static_tf is false; ~world_markers (visualization_msgs/MarkerArray, latched, and
+  again at 2 Hz while subscribed: walls, models, the robot's body, for rviz/tb3_sim.rviz). All rates are in
+  simulated time (see sensor_outputs).
 Services: /gazebo/{reset_world, reset_simulation, pause_physics, unpause_physics, spawn_sdf_model,
   spawn_urdf_model, delete_model, get_model_state, set_model_state, get_world_properties} (see gazebo_api),
   and ~snapshot (std_srvs/Empty): write a top-down PNG of the world (walls, models, robot, its trail, the
@@ -52,6 +54,7 @@ from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import Imu, JointState, LaserScan
 from std_srvs.srv import Empty, EmptyResponse
 from tf2_msgs.msg import TFMessage
+from visualization_msgs.msg import MarkerArray
 
 from tb3_sim import ros_messages
 from tb3_sim.config import config_from_params
@@ -61,11 +64,12 @@ from tb3_sim.gazebo_api import GazeboApi
 from tb3_sim.geometry import Pose2D
 from tb3_sim.pacing import Pacer
 from tb3_sim.robot_model import WAFFLE_STATIC_TRANSFORMS
-from tb3_sim.scene import Trail, scene_of
+from tb3_sim.scene import Trail, model_views, scene_of
 from tb3_sim.schedule import PeriodicSchedule
 from tb3_sim.sensor_outputs import Publishers, SensorOutputs
 from tb3_sim.world import World
 from tb3_sim.world_file import load_world
+from tb3_sim.world_markers import world_markers
 
 NODE_NAME = "gazebo"
 PACKAGE = "tb3_sim"
@@ -74,6 +78,7 @@ WARNING_THROTTLE_S = 5.0
 PAUSED_POLL_S = 0.05
 MASTER_RETRY_S = 1.0
 TRAIL_RATE_HZ = 30.0
+MARKER_RATE_HZ = 2.0          # ~world_markers again (sim time), only while rviz or someone subscribes
 SHUTDOWN_CHECK_MS = 100
 
 
@@ -106,6 +111,14 @@ class SimNode:
         self._trail_schedule = PeriodicSchedule(TRAIL_RATE_HZ)
         self._services = GazeboApi(self).advertise()
         self._snapshot = rospy.Service("~snapshot", Empty, self._on_snapshot)
+        self._markers = rospy.Publisher("~world_markers", MarkerArray, queue_size=1, latch=True)
+        self._marker_schedule = PeriodicSchedule(MARKER_RATE_HZ)
+        self._markers.publish(self._world_markers())
+
+    def _world_markers(self):
+        """The world as rviz markers (call with the world locked, or before the loop starts)."""
+        return world_markers(self._world.description.static_shapes, model_views(self._world),
+                             rospy.Time.from_sec(self._world.time_s))
 
     @contextmanager
     def locked_world(self):
@@ -190,6 +203,8 @@ class SimNode:
                 outgoing = self._outputs.collect(self._world)
                 if self._trail_schedule.due(now_s):
                     self._trail.add(*self._world.robot.pose[:2])
+                if self._marker_schedule.due(now_s) and self._markers.get_num_connections():
+                    outgoing.append((self._markers, self._world_markers()))
             for publisher, message in outgoing:
                 publisher.publish(message)
             delay_s = self._pacer.delay(now_s, time.monotonic())

@@ -91,9 +91,13 @@ class Scene:
                                 self.scan_origin.y + ranges[finite] * np.sin(angles[finite])))
 
 
+def model_views(world):
+    """The world's models as ModelViews, poses as of now (call with the world locked)."""
+    return tuple(ModelView(m.name, m.spec.shape, m.pose, m.spec.static) for m in world.models())
+
+
 def scene_of(world, trail, scan=None):
     """A Scene of `world` now (call with the world locked); `scan` is the latest ScanResult or None."""
-    models = tuple(ModelView(m.name, m.spec.shape, m.pose, m.spec.static) for m in world.models())
-    return Scene(static_shapes=world.description.static_shapes, models=models, robot_pose=world.robot.pose,
+    return Scene(static_shapes=world.description.static_shapes, models=model_views(world), robot_pose=world.robot.pose,
                  robot_outlines=waffle_footprint(), trail=trail.strokes(), scan=scan,
                  scan_origin=world.robot.scan_pose() if scan is not None else None)
