@@ -27,7 +27,7 @@ from services_quiz_srv.srv import Turn
 from std_srvs.srv import Empty, SetBool as StdSetBool
 from tuos_msgs.srv import Approach, SetBool, TimedMovement
 
-from roslab import wait_for_service, wait_for_topic
+from roslab import wait_for_param, wait_for_service, wait_for_topic
 from roslab.fuzz import FUZZ_SETTINGS, MIN_REQUESTS, GraphWatch, ServiceFuzzer
 from roslab.fuzz_strategies import float32s, float64s, signed_ints, texts
 from roslab.robot_view import RobotView, front_distance, pose_of
@@ -62,6 +62,7 @@ class Graph:
     def __init__(self, ros_master):
         self.processes = processes = [ros_master.roslaunch("week4_services", "week4_demo.launch", "gui:=false",
                                           "real_time_factor:={}".format(REAL_TIME_FACTOR))]
+        wait_for_param(ros_master.uri, "/use_sim_time")   # before the rosrun servers read it
         processes += [ros_master.rosrun(package, executable, *args) for package, executable, _, _, args in SERVERS]
         services = list(WEEK4.values()) + [service for *_, service, _ in SERVERS] + ["/moving"]
         for service in services:

@@ -12,7 +12,7 @@ from gazebo_msgs.srv import DeleteModel
 from services_quiz_srv.srv import Turn
 from std_srvs.srv import Empty, SetBool
 
-from roslab import wait_for_service, wait_for_topic, wait_until
+from roslab import wait_for_param, wait_for_service, wait_for_topic, wait_until
 from roslab.robot_view import RobotView, angle_between
 
 SERVERS = [("exercise42_pkg", "moving_right_server.py", "/moving_right"),
@@ -30,6 +30,7 @@ RAMP_S = 1.0
 def robot(ros_master):
     ros_master.roslaunch("course_sim_services", "course_sim_services.launch", "gui:=false",
                          "real_time_factor:=3")
+    assert wait_for_param(ros_master.uri, "/use_sim_time") is True   # before the servers read it
     for package, executable, _ in SERVERS:
         ros_master.rosrun(package, executable)
     for name in TYPES:
@@ -117,7 +118,8 @@ def test_move_drives_for_the_given_time_then_stops(robot):
     before = robot.pose()
     assert rospy.ServiceProxy("/move", Move)("forward", 0.2, 2).success is True
     after = robot.settled_pose()
-    assert after[0] - before[0] == pytest.approx(0.4, rel=0.05)
+    ahead = (after[0] - before[0]) * math.cos(before[2]) + (after[1] - before[1]) * math.sin(before[2])
+    assert ahead == pytest.approx(0.4, rel=0.05)
     time.sleep(RAMP_S)
     assert velocity(robot)[0] == pytest.approx(0.0, abs=0.002)
 

@@ -84,6 +84,8 @@ def graph(hosts):
         robot.wait_for_services(["/rosout/get_loggers"])
         robot.start("roslaunch", "tb3_sim", "tb3_sim.launch", "world:=approach_arena", "gui:=false",
                     "real_time_factor:=2")
+        wait_until(lambda: robot.run("rosparam", "get", "/use_sim_time", check=False).strip() == "true", 60,
+                   "/use_sim_time before the servers start (rospy reads it once)", interval_s=0.5)
         servers.start("rosrun", "week4_services", "move_server.py")
         servers.start("rosrun", "week4_services", "approach_server.py")
         robot.wait_for_services(["/move_service", "/approach_service", "/gazebo/reset_world"])

@@ -56,8 +56,11 @@ def kill_simulator_during(week4, name, srv_type, *args):
 def test_approach_fails_within_2_s_when_the_simulator_dies(week4):
     reply, answered_after = kill_simulator_during(week4, "/approach_service", Approach, 0.4, 0.05)
     assert answered_after < ANSWER_WITHIN_S
-    assert reply.response_message.startswith("Request failed: no /")
-    assert "is the simulator running?" in reply.response_message
+    # the watchdog notices first either the silence (no /odom for 1 s) or, when roslaunch respawns the
+    # simulator sooner, its clock starting again from 0
+    assert reply.response_message.startswith("Request failed: ")
+    assert ("is the simulator running?" in reply.response_message
+            or "the simulator restarted" in reply.response_message), reply.response_message
 
 
 def test_timed_move_fails_within_2_s_when_the_simulator_dies(week4):

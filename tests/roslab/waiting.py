@@ -43,3 +43,15 @@ def wait_for_topic(master_uri, name, timeout_s=20.0):
             return None
         return topics.get(name)
     return wait_until(lookup, timeout_s, "a publisher on " + name)
+
+
+def wait_for_param(master_uri, name, timeout_s=20.0):
+    """Wait until parameter `name` exists (e.g. /use_sim_time, before starting nodes that must use sim time:
+    rospy reads it once, at init_node); returns its value."""
+    def lookup():
+        try:
+            master = _master(master_uri)
+            return (master.getParam(name),) if master.hasParam(name) else None
+        except (rosgraph.MasterError, OSError):
+            return None
+    return wait_until(lookup, timeout_s, "parameter " + name)[0]

@@ -33,7 +33,7 @@ class RobotBusy(RobotError):
 
 
 class RobotLost(RobotError):
-    """The simulator or robot stopped publishing /odom or /scan."""
+    """The simulator or robot stopped publishing /odom or /scan, or its time went back (it restarted)."""
 
 
 class Robot:
@@ -50,6 +50,7 @@ class Robot:
         self.scan_count = 0
         self._odom_wall = None
         self._scan_wall = None
+        self._time_floor = None   # rospy time at the start of the current request (see exclusive)
         rospy.Subscriber("odom", Odometry, self._on_odom, queue_size=1)
         rospy.Subscriber("scan", LaserScan, self._on_scan, queue_size=1)
         rospy.on_shutdown(self.stop)
@@ -83,8 +84,10 @@ class Robot:
             raise RobotBusy("the robot is busy with another request; try again when it has finished")
         try:
             self.wait_until_ready(need_scan)
+            self._time_floor = rospy.get_rostime()
             yield self
         finally:
+            self._time_floor = None
             self.stop()
             self._busy.release()
 
@@ -99,7 +102,13 @@ class Robot:
         self._check_alive(need_scan)
 
     def _check_alive(self, need_scan):
-        """RobotLost unless /odom (and /scan if needed) arrived within the last STALE_AFTER_WALL_S."""
+        """RobotLost unless /odom (and /scan if needed) arrived within the last STALE_AFTER_WALL_S, and
+        (during a request) simulated time has not gone back: a respawned or reset simulator starts again
+        from 0, and a request measured on the old clock would otherwise wait on the new one."""
+        floor = self._time_floor
+        if floor is not None and rospy.get_rostime() < floor:
+            raise RobotLost("simulated time went back from {:.1f} s to {:.1f} s: the simulator restarted or was "
+                            "reset".format(floor.to_sec(), rospy.get_rostime().to_sec()))
         now = time.monotonic()
         for name, arrived, needed in (("/odom", self._odom_wall, True), ("/scan", self._scan_wall, need_scan)):
             if needed and (arrived is None or now - arrived > STALE_AFTER_WALL_S):
