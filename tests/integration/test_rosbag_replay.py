@@ -5,18 +5,17 @@ import time
 
 import pytest
 import rosbag
-import rosgraph
 import rospy
 from tuos_msgs.srv import SetBool
 
 from roslab import RosMaster, wait_for_service, wait_until
+from roslab.graph import subscribers
 from roslab.probe_node import to_plain
 
 
 def recorder_subscribed(master_uri):
     """True once a rosbag record node (/record_<id>) is among /odom's subscribers."""
-    _, subscribers, _ = rosgraph.Master("/roslab_test", master_uri=master_uri).getSystemState()
-    return any(node.startswith("/record_") for topic, nodes in subscribers if topic == "/odom" for node in nodes)
+    return any(node.startswith("/record_") for node in subscribers(master_uri, "/odom"))
 
 
 @pytest.fixture(scope="module")

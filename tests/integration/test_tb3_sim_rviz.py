@@ -3,10 +3,10 @@ display) loads the config and subscribes to the markers and the scan."""
 import os
 
 import pytest
-import rosgraph
 import rospkg
 
 from roslab import wait_for_topic, wait_until
+from roslab.graph import subscribers
 
 APPROACH_ARENA_SHAPES = 4 + 3   # four walls, three models
 
@@ -28,9 +28,7 @@ def test_world_markers_are_latched_and_complete(sim):
 
 
 def rviz_subscribed(master_uri):
-    _, subscribers, _ = rosgraph.Master("/roslab_test", master_uri=master_uri).getSystemState()
-    by_topic = {topic: nodes for topic, nodes in subscribers}
-    return all(any(node.startswith("/rviz") for node in by_topic.get(topic, []))
+    return all(any(node.startswith("/rviz") for node in subscribers(master_uri, topic))
                for topic in ["/gazebo/world_markers", "/scan"])
 
 

@@ -11,3 +11,9 @@ def node_pid(master_uri, node_name):
     if code != 1:
         raise RuntimeError("getPid on {} failed: {}".format(node_name, message))
     return pid
+
+
+def subscribers(master_uri, topic):
+    """Names of the nodes the master lists as subscribers of `topic` (empty when none)."""
+    _, subscriptions, _ = rosgraph.Master("/roslab_test", master_uri=master_uri).getSystemState()
+    return next((nodes for name, nodes in subscriptions if name == topic), [])
