@@ -1,5 +1,5 @@
-"""Faults under the Week 4 demo: a simulator that dies mid-request gets a failure reply within 2 s instead of
-a hang; roslaunch respawns it and the servers serve again; a client killed mid-call wedges nothing."""
+"""Faults under the Week 4 demo: a simulator that dies or is reset mid-request gets a failure reply within 2 s
+instead of a hang; roslaunch respawns it and the servers serve again; a client killed mid-call wedges nothing."""
 import os
 import signal
 import threading
@@ -8,10 +8,12 @@ import time
 import pytest
 import rosgraph
 import rospy
+from std_srvs.srv import Empty
 from tuos_msgs.srv import Approach, TimedMovement
 
 from roslab import wait_for_service, wait_for_topic, wait_until
 from roslab.graph import node_pid
+from roslab.robot_view import RobotView
 
 ANSWER_WITHIN_S = 2.0
 
@@ -42,15 +44,20 @@ def call_in_background(name, srv_type, *args):
     return thread, outcome
 
 
-def kill_simulator_during(week4, name, srv_type, *args):
+def fault_during(fault, name, srv_type, *args):
+    """Call the service, inject `fault` (a function) 2 s into the call; (reply, seconds from fault to reply)."""
     thread, outcome = call_in_background(name, srv_type, *args)
     time.sleep(2.0)
-    assert thread.is_alive(), "the call ended before the simulator was killed: {}".format(outcome)
-    os.kill(node_pid(week4.uri, "/gazebo"), signal.SIGKILL)
-    killed_at = time.monotonic()
+    assert thread.is_alive(), "the call ended before the fault: {}".format(outcome)
+    fault()
+    faulted_at = time.monotonic()
     thread.join(timeout=10)
-    assert not thread.is_alive(), "the call is still hanging 10 s after the simulator died"
-    return outcome["reply"], outcome["at"] - killed_at
+    assert not thread.is_alive(), "the call is still hanging 10 s after the fault"
+    return outcome["reply"], outcome["at"] - faulted_at
+
+
+def kill_simulator_during(week4, name, srv_type, *args):
+    return fault_during(lambda: os.kill(node_pid(week4.uri, "/gazebo"), signal.SIGKILL), name, srv_type, *args)
 
 
 def test_approach_fails_within_2_s_when_the_simulator_dies(week4):
@@ -67,6 +74,19 @@ def test_timed_move_fails_within_2_s_when_the_simulator_dies(week4):
     reply, answered_after = kill_simulator_during(week4, "/timed_move_service", TimedMovement, "fwd", 10)
     assert answered_after < ANSWER_WITHIN_S
     assert reply.success is False
+
+
+def test_timed_move_fails_within_2_s_when_the_simulation_is_reset(week4, probe):
+    """/gazebo/reset_simulation rewinds the clock: a duration measured on the old clock is meaningless, so the
+    request fails at once (rospy.sleep would raise ROSTimeMovedBackwardsException) and the robot stays put."""
+    robot = RobotView(probe)
+    reset = rospy.ServiceProxy("/gazebo/reset_simulation", Empty)
+    reply, answered_after = fault_during(reset, "/timed_move_service", TimedMovement, "fwd", 10)
+    assert answered_after < ANSWER_WITHIN_S
+    assert reply.success is False
+    x, y, _ = robot.settled_pose()
+    time.sleep(1.0)
+    assert robot.pose()[:2] == pytest.approx((x, y), abs=0.005), "the robot kept moving after the failure"
 
 
 def test_the_respawned_simulator_is_served_again(week4):

@@ -50,7 +50,8 @@ class Robot:
         self.scan_count = 0
         self._odom_wall = None
         self._scan_wall = None
-        self._time_floor = None   # rospy time at the start of the current request (see exclusive)
+        self._restarts = 0              # times the /odom stamps went back: the simulator restarted or was reset
+        self._restarts_at_start = None  # _restarts when the current request started (see exclusive)
         rospy.Subscriber("odom", Odometry, self._on_odom, queue_size=1)
         rospy.Subscriber("scan", LaserScan, self._on_scan, queue_size=1)
         rospy.on_shutdown(self.stop)
@@ -58,6 +59,8 @@ class Robot:
 
     def _on_odom(self, msg):
         with self._changed:
+            if self.odom is not None and msg.header.stamp < self.odom.header.stamp:
+                self._restarts += 1
             self.odom, self._odom_wall = msg, time.monotonic()
             self._changed.notify_all()
 
@@ -84,31 +87,36 @@ class Robot:
             raise RobotBusy("the robot is busy with another request; try again when it has finished")
         try:
             self.wait_until_ready(need_scan)
-            self._time_floor = rospy.get_rostime()
+            self._restarts_at_start = self._restarts
             yield self
         finally:
-            self._time_floor = None
+            self._restarts_at_start = None
             self.stop()
             self._busy.release()
 
     def wait_until_ready(self, need_scan=False):
         """Give a robot that has not published yet (the simulator is still starting) up to
-        FIRST_MESSAGE_GRACE_S, then RobotLost unless /odom (and /scan if needed) are arriving."""
+        FIRST_MESSAGE_GRACE_S, then RobotLost unless /odom (and /scan if needed) are arriving and rospy time
+        is running. Under /use_sim_time rospy time stays 0 until this node's first /clock message, which can
+        come after the first /odom; a duration measured from 0 would end early."""
         deadline = time.monotonic() + FIRST_MESSAGE_GRACE_S
         with self._changed:
-            while (self._odom_wall is None or (need_scan and self._scan_wall is None)) \
-                    and time.monotonic() < deadline and not rospy.is_shutdown():
+            while (self._odom_wall is None or (need_scan and self._scan_wall is None)
+                   or rospy.get_rostime().is_zero()) and time.monotonic() < deadline and not rospy.is_shutdown():
                 self._changed.wait(WAIT_SLICE_WALL_S)
+        if rospy.get_rostime().is_zero():
+            raise RobotLost("no /clock for {:.1f} s while /use_sim_time is set: is the simulator running?".format(
+                FIRST_MESSAGE_GRACE_S))
         self._check_alive(need_scan)
 
     def _check_alive(self, need_scan):
         """RobotLost unless /odom (and /scan if needed) arrived within the last STALE_AFTER_WALL_S, and
-        (during a request) simulated time has not gone back: a respawned or reset simulator starts again
-        from 0, and a request measured on the old clock would otherwise wait on the new one."""
-        floor = self._time_floor
-        if floor is not None and rospy.get_rostime() < floor:
-            raise RobotLost("simulated time went back from {:.1f} s to {:.1f} s: the simulator restarted or was "
-                            "reset".format(floor.to_sec(), rospy.get_rostime().to_sec()))
+        (during a request) the /odom stamps have not gone back: a respawned or reset simulator starts its
+        clock again from 0, possibly within STALE_AFTER_WALL_S, and a request measured on the old clock would
+        otherwise wait on the new one."""
+        if self._restarts_at_start is not None and self._restarts != self._restarts_at_start:
+            raise RobotLost("simulated time went back to {:.1f} s: the simulator restarted or was reset".format(
+                self.odom.header.stamp.to_sec()))
         now = time.monotonic()
         for name, arrived, needed in (("/odom", self._odom_wall, True), ("/scan", self._scan_wall, need_scan)):
             if needed and (arrived is None or now - arrived > STALE_AFTER_WALL_S):
