@@ -65,10 +65,15 @@ def test_src_alias_resources_the_environment(foreign_python_first):
 
 
 @pytest.mark.slow
-def test_catkin_make_works_despite_foreign_python(foreign_python_first):
-    code, output = in_fresh_terminal("cd catkin_ws && catkin_make", foreign_python_first)
+def test_catkin_make_works_despite_foreign_python(foreign_python_first, tmp_path):
+    """catkin_make into a fresh build folder, so CMake detects Python afresh instead of reading the workspace's
+    cache (and the workspace's own build is left as it was); tuos_msgs and its dependencies only, for speed."""
+    code, output = in_fresh_terminal(
+        "cd catkin_ws && catkin_make --build {0}/build -DCATKIN_DEVEL_PREFIX={0}/devel "
+        "--only-pkg-with-deps tuos_msgs".format(tmp_path), foreign_python_first)
     assert code == 0, output[-3000:]
     assert "PYTHON_EXECUTABLE: {}".format(REPO_ROOT / ".venv/bin/python3") in output
+    assert list((tmp_path / "devel").glob("lib/python3*/dist-packages/tuos_msgs/srv/_SetBool.py")), output[-3000:]
 
 
 def run_setup():
