@@ -2,7 +2,6 @@
 instead of a hang; roslaunch respawns it and the servers serve again; a client killed mid-call wedges nothing."""
 import os
 import signal
-import threading
 import time
 
 import pytest
@@ -12,6 +11,7 @@ from std_srvs.srv import Empty
 from tuos_msgs.srv import Approach, TimedMovement
 
 from roslab import wait_for_service, wait_for_topic, wait_until
+from roslab.calls import BackgroundCall
 from roslab.graph import node_pid
 from roslab.robot_view import RobotView
 
@@ -29,31 +29,15 @@ def week4(ros_master):
     launch.stop()
 
 
-def call_in_background(name, srv_type, *args):
-    """Start a service call on a thread; returns (thread, outcome dict with 'reply' or 'error' and 'at')."""
-    outcome = {}
-
-    def run():
-        try:
-            outcome["reply"] = rospy.ServiceProxy(name, srv_type)(*args)
-        except rospy.ServiceException as error:
-            outcome["error"] = error
-        outcome["at"] = time.monotonic()
-    thread = threading.Thread(target=run, daemon=True)
-    thread.start()
-    return thread, outcome
-
-
 def fault_during(fault, name, srv_type, *args):
     """Call the service, inject `fault` (a function) 2 s into the call; (reply, seconds from fault to reply)."""
-    thread, outcome = call_in_background(name, srv_type, *args)
+    call = BackgroundCall(name, srv_type, *args)
     time.sleep(2.0)
-    assert thread.is_alive(), "the call ended before the fault: {}".format(outcome)
+    assert call.running(), "the call ended before the fault: {}".format(call)
     fault()
     faulted_at = time.monotonic()
-    thread.join(timeout=10)
-    assert not thread.is_alive(), "the call is still hanging 10 s after the fault"
-    return outcome["reply"], outcome["at"] - faulted_at
+    assert call.join(timeout_s=10), "the call is still hanging 10 s after the fault"
+    return call.reply, call.answered_at - faulted_at
 
 
 def kill_simulator_during(week4, name, srv_type, *args):

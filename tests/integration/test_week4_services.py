@@ -10,6 +10,7 @@ from std_srvs.srv import Empty
 from tuos_msgs.srv import Approach, SetBool, TimedMovement
 
 from roslab import wait_for_service
+from roslab.calls import BackgroundCall
 from roslab.robot_view import RobotView, angle_between, pose_of
 
 REAL_TIME_FACTOR = "3"
@@ -94,6 +95,28 @@ def test_timed_move_refuses_bad_requests_without_motion(robot, word, duration):
     assert call("/timed_move_service", TimedMovement, word, duration).success is False
     assert time.monotonic() - started < 1.0
     assert_did_not_move(robot, before)
+
+
+def test_a_second_timed_move_while_one_runs_is_refused_at_once(robot):
+    """Requests never interleave: the second is refused at once, logs no "Moving" line, and the robot
+    carries out the first alone."""
+    robot.probe.subscribe("/rosout_agg", "rosgraph_msgs/Log")
+    robot.probe.take("/rosout_agg")
+    before = robot.pose()
+    first = BackgroundCall("/timed_move_service", TimedMovement, "fwd", 2)
+    robot.probe.wait_for_message("/odom", predicate=lambda odom: odom["twist"]["twist"]["linear"]["x"] > 0.05)
+    started = time.monotonic()
+    assert call("/timed_move_service", TimedMovement, "left", 1).success is False
+    assert time.monotonic() - started < 1.0
+    assert first.join(timeout_s=30) and first.reply.success is True
+    after = robot.settled_pose()
+    assert after[0] - before[0] == pytest.approx(0.20, rel=0.05)
+    assert abs(angle_between(before[2], after[2])) < 0.01
+    time.sleep(0.5)   # rosout relays the server's last lines
+    logs = [entry["msg"] for entry in robot.probe.take("/rosout_agg")]
+    lines = [log["msg"] for log in logs if log["name"] == "/timed_move_service_server"]
+    assert [line for line in lines if line.startswith("Moving")] == ["Moving 'fwd' for 2 seconds..."], lines
+    assert any("busy" in line for line in lines), lines
 
 
 @pytest.mark.parametrize("velocity, tolerance", [(0.1, 0.02), (0.26, 0.04)])

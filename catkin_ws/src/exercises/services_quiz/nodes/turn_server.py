@@ -16,9 +16,8 @@ class TurnServer:
     def callback(self, request):
         try:
             motion = turn_motion(request.direction, request.angular_velocity, request.time)
-            rospy.loginfo("Turning %s at %.2f rad/s for %d s", request.direction, request.angular_velocity,
-                          request.time)
-            self.robot.perform(motion)
+            self.robot.perform(motion, "Turning {} at {:.2f} rad/s for {} s".format(
+                request.direction, request.angular_velocity, request.time))
         except (InvalidRequest, RobotError) as error:
             rospy.logwarn("Refused: %s", error)
             return TurnResponse(False)

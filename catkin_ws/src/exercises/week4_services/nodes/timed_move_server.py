@@ -29,8 +29,8 @@ class TimedMoveServer:
         try:
             motion = timed_movement(request.movement_request, request.duration,
                                     self.linear_speed, self.angular_speed)
-            rospy.loginfo("Moving '%s' for %d seconds...", request.movement_request.strip(), request.duration)
-            self.robot.perform(motion)
+            self.robot.perform(motion, "Moving '{}' for {} seconds...".format(
+                request.movement_request.strip(), request.duration))
         except (InvalidRequest, RobotError) as error:
             rospy.logerr("Request refused: %s", error)
             return TimedMovementResponse(False)

@@ -123,10 +123,13 @@ class Robot:
                 raise RobotLost("no {} from the robot for {:.1f} s: is the simulator running?".format(
                     name, STALE_AFTER_WALL_S))
 
-    def perform(self, motion):
+    def perform(self, motion, announce=None):
         """Hold the velocities of `motion` (tb3_client.motion.Motion) for its duration under exclusive(),
-        then stop; RobotBusy or RobotLost when that cannot be done."""
+        then stop; RobotBusy or RobotLost when that cannot be done. `announce` is logged once the robot is
+        held and ready, so a refused call never claims in the log that it is moving."""
         with self.exclusive():
+            if announce:
+                rospy.loginfo(announce)
             self.drive(motion.linear, motion.angular)
             self.wait(motion.duration_s)
 
