@@ -29,6 +29,7 @@ def recorded_bag(ros_master, tmp_path_factory):
     time.sleep(1.0)
     assert rospy.ServiceProxy("/move_service", SetBool)(True).response_signal is True
     recorder.stop()
+    assert bag_path.exists(), "rosbag record did not close the bag on Ctrl-C: " + recorder.output()[-2000:]
     return bag_path
 
 

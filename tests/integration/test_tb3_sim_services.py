@@ -182,18 +182,21 @@ def test_spawn_box_tool(ros_master, sim):
     assert (code, out, err) == (1, "", "spawn_box: SpawnModel: Failure - entity already exists.\n")
 
 
-def test_spawn_model_tool_from_a_file_and_a_parameter(ros_master, sim, tmp_path):
+@pytest.mark.parametrize("package, y", [("tb3_sim", -1.0), ("gazebo_ros", -1.5)])
+def test_spawn_model_tool_from_a_file_and_a_parameter(ros_master, sim, tmp_path, package, y):
+    """`rosrun gazebo_ros spawn_model ...` as course pages write it runs the same tool."""
+    name = "crate_" + package
     model = tmp_path / "crate.urdf"
     model.write_text(URDF_BOX)
-    result = subprocess.run(["rosrun", "tb3_sim", "spawn_model", "-urdf", "-file", str(model), "-model", "crate2",
-                             "-x", "0.55", "-y", "-1.0"], env=ros_master.env, stdout=subprocess.PIPE,
+    result = subprocess.run(["rosrun", package, "spawn_model", "-urdf", "-file", str(model), "-model", name,
+                             "-x", "0.55", "-y", str(y)], env=ros_master.env, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True, timeout=60)
     assert result.returncode == 0, result.stdout
     assert "Spawn status: SpawnModel: Successfully spawned entity" in result.stdout
-    assert position("crate2") == pytest.approx((0.55, -1.0), abs=1e-3)
+    assert position(name) == pytest.approx((0.55, y), abs=1e-3)
     subprocess.run(["rosparam", "set", "/crate_description", URDF_BOX], env=ros_master.env, check=True, timeout=30)
-    result = subprocess.run(["rosrun", "tb3_sim", "spawn_model", "-urdf", "-param", "crate_description", "-model",
-                             "crate2"], env=ros_master.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+    result = subprocess.run(["rosrun", package, "spawn_model", "-urdf", "-param", "crate_description", "-model",
+                             name], env=ros_master.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                             text=True, timeout=60)
     assert result.returncode == 1
     assert "Spawn status: SpawnModel: Failure - entity already exists.\nSpawn service failed. Exiting." in \

@@ -6,9 +6,11 @@ rosrun started under it. Output goes to a log file that failing tests can show.
 import os
 import signal
 import subprocess
+import time
 from pathlib import Path
 
 CLOCK_TICKS_PER_S = os.sysconf("SC_CLK_TCK")
+OFFSPRING_GRACE_S = 5.0
 
 
 def _stat_fields(pid):
@@ -35,13 +37,28 @@ def descendants(pid):
     return found
 
 
+def alive(pid, started):
+    """True while `pid` is still the process that started at `started` and has not exited (a zombie has)."""
+    try:
+        fields = _stat_fields(pid)
+    except OSError:
+        return False
+    return fields[19] == started and fields[0] != "Z"
+
+
 def kill_if_alive(pid, started):
     """SIGKILL `pid` if it is still the process that started at `started`."""
-    try:
-        if _stat_fields(pid)[19] == started:
+    if alive(pid, started):
+        try:
             os.kill(pid, signal.SIGKILL)
-    except (OSError, IndexError):
-        pass
+        except OSError:
+            pass
+
+
+def _wait_for_exit(processes, deadline):
+    """Wait until none of `processes` ({(pid, start time)}) is alive, or until time.monotonic() `deadline`."""
+    while any(alive(*process) for process in processes) and time.monotonic() < deadline:
+        time.sleep(0.05)
 
 
 def cpu_seconds(pid):
@@ -84,18 +101,23 @@ class RosProcess:
     def stop(self, grace_s=20.0):
         """SIGINT (what Ctrl-C sends, so nodes run their shutdown hooks), then SIGKILL after `grace_s`.
 
-        roslaunch puts each node in a session of its own, so a node that outlives a killed roslaunch would
-        escape the process group: every descendant seen before or during the shutdown is killed too."""
+        A wrapper may exit before the children it forwarded Ctrl-C to (`rosbag record` leaves its recorder
+        closing the bag), so descendants get up to OFFSPRING_GRACE_S more to finish on their own. roslaunch
+        puts each node in a session of its own, so a node that outlives a killed roslaunch would escape the
+        process group: every descendant seen before or during the shutdown is killed at the end."""
         offspring = set(descendants(self.popen.pid))
         if self.running():
             self.signal(signal.SIGINT)
+            deadline = time.monotonic() + grace_s
             try:
                 self.popen.wait(timeout=grace_s)
             except subprocess.TimeoutExpired:
                 offspring.update(descendants(self.popen.pid))
+            _wait_for_exit(offspring, min(deadline, time.monotonic() + OFFSPRING_GRACE_S))
         self.signal(signal.SIGKILL)
         self.popen.wait()
         for pid, started in offspring:
             kill_if_alive(pid, started)
+        _wait_for_exit(offspring, time.monotonic() + OFFSPRING_GRACE_S)   # SIGKILL takes effect asynchronously
         self._log.close()
         return self.popen.returncode
