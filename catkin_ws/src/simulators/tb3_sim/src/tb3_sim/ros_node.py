@@ -205,8 +205,13 @@ class SimNode:
                     self._trail.add(*self._world.robot.pose[:2])
                 if self._marker_schedule.due(now_s) and self._markers.get_num_connections():
                     outgoing.append((self._markers, self._world_markers()))
-            for publisher, message in outgoing:
-                publisher.publish(message)
+            try:
+                for publisher, message in outgoing:
+                    publisher.publish(message)
+            except rospy.ROSException:
+                if rospy.is_shutdown():
+                    return   # Ctrl-C closed the publishers after the loop's shutdown check
+                raise
             delay_s = self._pacer.delay(now_s, time.monotonic())
             if delay_s:
                 time.sleep(delay_s)

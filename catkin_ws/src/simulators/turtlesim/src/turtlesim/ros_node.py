@@ -113,8 +113,13 @@ class TurtleSimNode:
             return False
         with self._lock:
             results = self._sim.step(time.time())
-            for name, result in results:
-                self._turtles[name].publish(result)
+            try:
+                for name, result in results:
+                    self._turtles[name].publish(result)
+            except rospy.ROSException:
+                if rospy.is_shutdown():
+                    return False   # Ctrl-C closed the publishers after the shutdown check above
+                raise
             poses = [(name, result.pose) for name, result in results]
             if poses != self._last_poses:
                 self._last_poses = poses
