@@ -2,9 +2,9 @@
 forwarded the interrupt to may finish their work (rosbag record closing its bag) after the wrapper has exited,
 and whatever is still alive after the grace period is killed."""
 import sys
-import time
 
 from roslab.processes import RosProcess, alive, descendants
+from roslab.waiting import wait_until
 
 WRAPPER = """
 import subprocess, sys
@@ -35,10 +35,7 @@ def start_wrapper(tmp_path, child_code):
     ready = tmp_path / "ready"
     process = RosProcess([sys.executable, "-c", WRAPPER, child_code, str(tmp_path / "closed"), str(ready)],
                          env=None, log_path=tmp_path / "log")
-    deadline = time.monotonic() + 30
-    while not ready.exists():
-        assert time.monotonic() < deadline, process.output()
-        time.sleep(0.05)
+    wait_until(ready.exists, 30, "the child to start")
     return process
 
 
