@@ -6,7 +6,7 @@ On a private roscore, tb3_sim runs turtlebot3_world at real time next to the tut
 (see roslab.load). For add_two_int (Python, then the C++ server for comparison) and /gazebo/get_model_state,
 20 client threads with a persistent connection each make 100 calls, all at once. Reported per service: p50
 and p99 call latency, failed calls, the /odom and /scan rates while the load ran (from their header stamps,
-in sim time, as tests/integration/test_load.py checks them), and the simulator's real-time factor meanwhile
+in sim time, as tests/integration/lab/test_load.py checks them), and the simulator's real-time factor meanwhile
 (sim seconds of /odom stamps per wall second of their arrival: at 1.0 those rates held in wall time too).
 `run()` returns the rows [(name, value, unit, target, comparison)] for scripts/bench's table.
 """

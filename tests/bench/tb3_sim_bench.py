@@ -5,7 +5,7 @@
 Measures, each on a private roscore with the simulator started by its launch file (headless):
 - real-time factor at ~real_time_factor:=0 in turtlebot3_world with /scan and /odom subscribed (target >= 20x);
 - CPU of the simulator process at factor 1, same subscriptions, as % of one core (target <= 15%);
-- one 360-beam scan in turtlebot3_world, from tb3_sim.benchmark (target <= 0.5 ms);
+- one 360-beam scan in turtlebot3_world, from tb3_sim.tools.benchmark (target <= 0.5 ms);
 - wall time from `roslaunch` to the first /scan message (target <= 3 s).
 `run()` returns the rows [(name, value, unit, target, comparison)] for scripts/bench's table
 (`scripts/bench tb3_sim_bench` runs only these).
@@ -20,7 +20,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from roslab import RosMaster, wait_for_service, wait_until  # noqa: E402  (needs the sys.path entry above)
 from roslab.graph import node_pid  # noqa: E402
 from roslab.processes import cpu_seconds  # noqa: E402
-from tb3_sim.benchmark import bench_scan  # noqa: E402
+from tb3_sim.tools.benchmark import bench_scan  # noqa: E402
 
 MEASURE_S = 10.0
 WORLD_ARGS = ("world:=turtlebot3_world", "x_pos:=-2.0", "y_pos:=-0.5", "gui:=false")

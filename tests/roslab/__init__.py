@@ -1,8 +1,8 @@
 """Test helpers for a real ROS 1 graph: a private master per test module, node and launch processes that
 are always ended, waiting with timeouts, and a probe node that reads and writes topics for the test."""
 from roslab.master import RosMaster, free_port
-from roslab.processes import RosProcess
 from roslab.probe import TopicProbe
+from roslab.processes import RosProcess
 from roslab.waiting import wait_for_param, wait_for_service, wait_for_topic, wait_until
 
 __all__ = ["RosMaster", "RosProcess", "TopicProbe", "free_port", "wait_for_param", "wait_for_service",

@@ -1,4 +1,4 @@
-"""Calling services with fuzzed requests and checking the graph survived, for tests/integration/test_fuzz_*.
+"""Calling services with fuzzed requests and checking the graph survived, for tests/integration/*/test_fuzz_*.
 
 `ServiceFuzzer` makes one call per request in a thread of the test process (rospy.ServiceProxy needs no
 node) and fails the test when the call does not come back within its budget, when the node died (a transport

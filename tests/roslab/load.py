@@ -1,4 +1,4 @@
-"""Service load for tests/integration/test_load.py and tests/bench/load_bench.py: many clients calling one
+"""Service load for tests/integration/lab/test_load.py and tests/bench/load_bench.py: many clients calling one
 service at once while tb3_sim runs at real time, and what the robot's topics did meanwhile.
 
 `LoadGraph` starts tb3_sim (turtlebot3_world, real_time_factor 1) and the tutorial's add_two_int servers
@@ -14,9 +14,9 @@ import time
 from typing import Callable, List, NamedTuple
 
 import rospy
-from beginner_tutorials.srv import add_two_int
 from gazebo_msgs.srv import GetModelState
 
+from beginner_tutorials.srv import add_two_int
 from roslab.waiting import wait_for_service
 
 CLIENTS = 20

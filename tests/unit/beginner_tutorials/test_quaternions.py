@@ -4,8 +4,15 @@ import math
 import pytest
 
 from beginner_tutorials.errors import UsageError
-from beginner_tutorials.quaternions import (DEFAULT_ANGLES, EulerAngles, Quaternion, parse_angles, same_rotation,
-                                            to_euler, to_quaternion)
+from beginner_tutorials.quaternions import (
+    DEFAULT_ANGLES,
+    EulerAngles,
+    Quaternion,
+    parse_angles,
+    same_rotation,
+    to_euler,
+    to_quaternion,
+)
 
 HALF_SQRT2 = math.sqrt(0.5)
 

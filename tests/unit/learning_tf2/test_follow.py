@@ -3,8 +3,7 @@ import math
 
 import pytest
 
-from learning_tf2.follow import (FIXED_CARROT_OFFSET_M, follow_command, moving_carrot_offset,
-                                 yaw_quaternion)
+from learning_tf2.follow import FIXED_CARROT_OFFSET_M, follow_command, moving_carrot_offset, yaw_quaternion
 
 
 def test_target_straight_ahead_drives_without_turning():

@@ -1,11 +1,11 @@
 """The box tool's gestures on a real World (no Qt): place, pick, drag, delete; the robot is never picked."""
 import pytest
 
-from tb3_sim.box_tool import BoxTool, model_at, next_box_name
-from tb3_sim.geometry import Pose2D
-from tb3_sim.shapes import Box, Cylinder
-from tb3_sim.world import World
-from tb3_sim.world_file import ModelSpec, load_world, shipped_world_path
+from tb3_sim.core.geometry import Pose2D
+from tb3_sim.core.shapes import Box, Cylinder
+from tb3_sim.core.world import World
+from tb3_sim.core.world_file import ModelSpec, load_world, shipped_world_path
+from tb3_sim.view.box_tool import BoxTool, model_at, next_box_name
 
 
 @pytest.fixture

@@ -1,9 +1,9 @@
 """The node's parameters: defaults, world names and paths, and clear errors for bad values."""
 import pytest
 
-from tb3_sim.config import config_from_params, resolve_world
-from tb3_sim.errors import ConfigError
-from tb3_sim.world_file import SHIPPED_WORLDS_DIR
+from tb3_sim.core.errors import ConfigError
+from tb3_sim.core.world_file import SHIPPED_WORLDS_DIR
+from tb3_sim.ros.config import config_from_params, resolve_world
 
 
 def test_defaults():

@@ -4,9 +4,9 @@ import math
 
 import pytest
 
-from tb3_sim.diff_drive import DiffDrive, validate_command
-from tb3_sim.errors import InvalidCommandError
-from tb3_sim.robot_model import WAFFLE_WHEEL_RADIUS_M, WAFFLE_WHEEL_SEPARATION_M
+from tb3_sim.core.diff_drive import DiffDrive, validate_command
+from tb3_sim.core.errors import InvalidCommandError
+from tb3_sim.core.waffle import WAFFLE_WHEEL_RADIUS_M, WAFFLE_WHEEL_SEPARATION_M
 
 STEP_S = 0.005
 

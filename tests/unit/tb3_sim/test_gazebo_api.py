@@ -3,17 +3,22 @@ import math
 
 import pytest
 from gazebo_msgs.msg import ModelState
-from gazebo_msgs.srv import (DeleteModelRequest, GetModelStateRequest, GetWorldPropertiesRequest,
-                             SetModelStateRequest, SpawnModelRequest)
+from gazebo_msgs.srv import (
+    DeleteModelRequest,
+    GetModelStateRequest,
+    GetWorldPropertiesRequest,
+    SetModelStateRequest,
+    SpawnModelRequest,
+)
 from geometry_msgs.msg import Pose, Quaternion
 from std_srvs.srv import EmptyRequest
 
-from tb3_sim.errors import ProtectedModelError
-from tb3_sim.gazebo_api import GazeboApi, failure_message
-from tb3_sim.geometry import Pose2D, yaw_to_quaternion
-from tb3_sim.model_xml import box_sdf
-from tb3_sim.world import World
-from tb3_sim.world_file import load_world, shipped_world_path
+from tb3_sim.core.errors import ProtectedModelError
+from tb3_sim.core.geometry import Pose2D, yaw_to_quaternion
+from tb3_sim.core.model_xml import box_sdf
+from tb3_sim.core.world import World
+from tb3_sim.core.world_file import load_world, shipped_world_path
+from tb3_sim.ros.gazebo_api import GazeboApi, failure_message
 
 
 @pytest.fixture

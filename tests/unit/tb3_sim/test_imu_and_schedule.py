@@ -4,11 +4,11 @@ import math
 
 import pytest
 
-from tb3_sim.geometry import Pose2D, Twist2D, quaternion_to_yaw, wrap_angle, yaw_to_quaternion
-from tb3_sim.imu import Imu
-from tb3_sim.schedule import PeriodicSchedule
-from tb3_sim.world import PHYSICS_STEP_S, World
-from tb3_sim.world_file import WorldDescription
+from tb3_sim.core.geometry import Pose2D, Twist2D, quaternion_to_yaw, wrap_angle, yaw_to_quaternion
+from tb3_sim.core.imu import Imu
+from tb3_sim.core.schedule import PeriodicSchedule
+from tb3_sim.core.world import PHYSICS_STEP_S, World
+from tb3_sim.core.world_file import WorldDescription
 
 
 def test_imu_reports_spawn_yaw_and_zero_acceleration_at_rest():

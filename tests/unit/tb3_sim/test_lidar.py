@@ -4,15 +4,22 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from tb3_sim.geometry import Pose2D
-from tb3_sim.lidar import (LIDAR_ANGLE_INCREMENT_RAD, LIDAR_NOISE_STDDEV_M, LIDAR_RANGE_MAX_M, LIDAR_RANGE_MIN_M,
-                           Lidar, beam_angles)
-from tb3_sim.obstacles import Obstacles, static_obstacles
-from tb3_sim.shapes import Box, Circle, Polygon, Segment
-from tb3_sim.world import World
-from tb3_sim.world_file import ModelSpec, WorldDescription
+from tb3_sim.core.geometry import Pose2D
+from tb3_sim.core.lidar import (
+    LIDAR_ANGLE_INCREMENT_RAD,
+    LIDAR_NOISE_STDDEV_M,
+    LIDAR_RANGE_MAX_M,
+    LIDAR_RANGE_MIN_M,
+    Lidar,
+    beam_angles,
+)
+from tb3_sim.core.obstacles import Obstacles, static_obstacles
+from tb3_sim.core.shapes import Box, Circle, Polygon, Segment
+from tb3_sim.core.world import World
+from tb3_sim.core.world_file import ModelSpec, WorldDescription
 
 SCAN_OFFSET_M = 0.064
 THREE_SIGMA_M = 3 * LIDAR_NOISE_STDDEV_M
@@ -39,7 +46,7 @@ def test_layout_constants_are_gazebos():
 
 
 def test_nothing_hit_is_inf():
-    result = World(WorldDescription("empty")).scan()
+    result = Lidar().read(World(WorldDescription("empty")), 0.0)
     assert np.all(np.isposinf(result.ranges))
 
 
@@ -63,7 +70,7 @@ def test_beam_directions_index_0_ahead_and_ccw(index, approx_deg):
 
 def test_left_and_right_in_the_robot_frame():
     world = World(WorldDescription("w", "w", (Circle((-SCAN_OFFSET_M, 1.0), 0.1), Circle((-SCAN_OFFSET_M, -2.0), 0.1))))
-    ranges = world.scan().ranges
+    ranges = Lidar().read(world, world.time_s).ranges
     assert ranges[90] == pytest.approx(0.9, abs=THREE_SIGMA_M)
     assert ranges[270] == pytest.approx(1.9, abs=0.01 + THREE_SIGMA_M)
     assert np.isposinf(ranges[0]) and np.isposinf(ranges[180])
@@ -71,7 +78,7 @@ def test_left_and_right_in_the_robot_frame():
 
 def test_distance_to_a_wall_equals_the_analytic_value():
     world = World(wall_world(2.0))
-    ranges = world.scan().ranges.astype(float)
+    ranges = Lidar().read(world, world.time_s).ranges.astype(float)
     angles = beam_angles()
     expected = (2.0 + SCAN_OFFSET_M) / np.cos(angles)
     in_range = (np.cos(angles) > 0) & (expected < LIDAR_RANGE_MAX_M - THREE_SIGMA_M)
@@ -103,7 +110,7 @@ def test_distance_to_a_rotated_box_equals_the_analytic_value():
     center, yaw, size = (1.5, 0.1), 0.3, (0.4, 0.6)
     world = World(WorldDescription("arena"), robot_pose=Pose2D(0.0, 0.0, 0.0))
     world.spawn_model(ModelSpec("box", Box(*size, 0.5), Pose2D(*center, yaw)))
-    ranges = world.scan().ranges
+    ranges = Lidar().read(world, world.time_s).ranges
     origin = (-SCAN_OFFSET_M, 0.0)
     checked = 0
     for index, angle in enumerate(beam_angles()):
@@ -137,12 +144,12 @@ def test_noisy_readings_are_clamped_to_the_range():
 
 def test_same_seed_same_scans_different_seed_different():
     def scans(seed):
-        world = World(wall_world(1.0), seed=seed)
+        world, lidar = World(wall_world(1.0)), Lidar(seed)
         world.robot.set_command(0.1, 0.3)
         out = []
         for _ in range(3):
             world.run(0.2)
-            out.append(world.scan().ranges)
+            out.append(lidar.read(world, world.time_s).ranges)
         return out
 
     first, again, other = scans(7), scans(7), scans(8)
@@ -153,19 +160,20 @@ def test_same_seed_same_scans_different_seed_different():
 def test_objects_lower_than_the_scan_plane_are_not_seen():
     world = World(WorldDescription("empty"))
     world.spawn_model(ModelSpec("low", Box(0.3, 0.3, 0.1), Pose2D(1.0, 0.0, 0.0)))
-    assert np.isposinf(world.scan().ranges[0])
+    assert np.isposinf(Lidar().read(world, world.time_s).ranges[0])
     world.spawn_model(ModelSpec("tall", Box(0.3, 0.3, 0.2), Pose2D(2.0, 0.0, 0.0)))
-    assert world.scan().ranges[0] == pytest.approx(2.0 - 0.15 + SCAN_OFFSET_M, abs=THREE_SIGMA_M)
-    seeing = World(WorldDescription("empty"), lidar_sees_low_objects=True)
+    assert Lidar().read(world, world.time_s).ranges[0] == pytest.approx(2.0 - 0.15 + SCAN_OFFSET_M, abs=THREE_SIGMA_M)
+    seeing = World(WorldDescription("empty"))
     seeing.spawn_model(ModelSpec("low", Box(0.3, 0.3, 0.1), Pose2D(1.0, 0.0, 0.0)))
-    assert seeing.scan().ranges[0] == pytest.approx(1.0 - 0.15 + SCAN_OFFSET_M, abs=THREE_SIGMA_M)
+    seen = Lidar(sees_low_objects=True).read(seeing, 0.0).ranges[0]
+    assert seen == pytest.approx(1.0 - 0.15 + SCAN_OFFSET_M, abs=THREE_SIGMA_M)
 
 
 def test_scan_follows_a_moved_model():
     world = World(WorldDescription("empty"))
     world.spawn_model(ModelSpec("can", Box(0.2, 0.2, 0.5), Pose2D(1.0, 0.0, 0.0)))
     world.set_model_state("can", Pose2D(0.0, 1.0, 0.0))
-    ranges = world.scan().ranges
+    ranges = Lidar().read(world, world.time_s).ranges
     assert np.isposinf(ranges[0]) and np.isfinite(ranges[90])
 
 

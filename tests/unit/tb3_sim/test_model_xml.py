@@ -3,10 +3,10 @@ import math
 
 import pytest
 
-from tb3_sim.errors import ModelXmlError, NotModelXmlError, NotUrdfError
-from tb3_sim.geometry import Pose2D
-from tb3_sim.model_xml import box_sdf, compose, parse_model_xml
-from tb3_sim.shapes import Box, Cylinder
+from tb3_sim.core.errors import ModelXmlError, NotModelXmlError, NotUrdfError
+from tb3_sim.core.geometry import Pose2D
+from tb3_sim.core.model_xml import box_sdf, compose, parse_model_xml
+from tb3_sim.core.shapes import Box, Cylinder
 
 SDF_BOX = """<?xml version="1.0"?>
 <!-- as the Gazebo box tool writes it -->

@@ -1,7 +1,7 @@
 """Pacer: wall-clock waits that hold a real-time factor without bursts."""
 import pytest
 
-from tb3_sim.pacing import Pacer
+from tb3_sim.core.pacing import Pacer
 
 
 def test_factor_one_waits_until_wall_time_catches_up():

@@ -2,13 +2,14 @@
 import pytest
 from PyQt5.QtGui import QColor, QImage
 
-from tb3_sim import renderer
-from tb3_sim.geometry import Pose2D
-from tb3_sim.renderer import View, render_image, save_png
-from tb3_sim.scene import Trail, scene_of
-from tb3_sim.shapes import Box
-from tb3_sim.world import World
-from tb3_sim.world_file import ModelSpec, load_world, shipped_world_path
+from tb3_sim.core.geometry import Pose2D
+from tb3_sim.core.lidar import Lidar
+from tb3_sim.core.shapes import Box
+from tb3_sim.core.world import World
+from tb3_sim.core.world_file import ModelSpec, load_world, shipped_world_path
+from tb3_sim.view import renderer
+from tb3_sim.view.renderer import View, render_image, save_png
+from tb3_sim.view.scene import Trail, scene_of
 
 
 @pytest.fixture
@@ -50,7 +51,7 @@ def test_trail_drops_the_oldest_points():
 
 
 def test_scene_copies_models_robot_and_scan_hits(world):
-    scene = scene_of(world, Trail(), world.scan())
+    scene = scene_of(world, Trail(), Lidar().read(world, world.time_s))
     assert [m.name for m in scene.models] == ["box1"]
     assert scene.robot_pose == pytest.approx(Pose2D(-2.0, -0.5, 0.0))
     hits = scene.scan_hits()
@@ -70,7 +71,7 @@ def test_view_fits_the_whole_arena():
 def test_pixels_show_robot_walls_models_and_rays(world):
     trail = Trail()
     trail.add(-2.0, -0.5)
-    image, view = render_image(scene_of(world, trail, world.scan()), 800, 800)
+    image, view = render_image(scene_of(world, trail, Lidar().read(world, world.time_s)), 800, 800)
     assert colour_at(image, view, -2.05, -0.5) == renderer.ROBOT_FILL.rgb()
     assert colour_at(image, view, 0.0, 0.0) == renderer.STATIC_FILL.rgb()
     assert colour_at(image, view, -1.0, -0.4) == renderer.MODEL_FILL.rgb()

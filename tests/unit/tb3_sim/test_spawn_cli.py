@@ -3,9 +3,9 @@ import math
 
 import pytest
 
-from tb3_sim.model_xml import parse_model_xml
-from tb3_sim.shapes import Box
-from tb3_sim.spawn_cli import describe, parse_args, spawn_request
+from tb3_sim.core.model_xml import parse_model_xml
+from tb3_sim.core.shapes import Box
+from tb3_sim.tools.spawn_box import describe, parse_args, spawn_request
 
 
 def test_defaults_make_a_dynamic_cube():

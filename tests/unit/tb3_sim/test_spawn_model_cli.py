@@ -3,7 +3,7 @@ import math
 
 import pytest
 
-from tb3_sim.spawn_model_cli import parser, read_model, spawn_request
+from tb3_sim.tools.spawn_model import parser, read_model, spawn_request
 
 
 def test_turtlebot3_launch_style_arguments(tmp_path):

@@ -10,13 +10,13 @@ from PyQt5.QtGui import QColor, QMouseEvent  # noqa: E402
 from PyQt5.QtTest import QTest  # noqa: E402
 from PyQt5.QtWidgets import QApplication  # noqa: E402
 
-from tb3_sim.box_tool import BoxTool  # noqa: E402
-from tb3_sim.geometry import Pose2D  # noqa: E402
-from tb3_sim.renderer import ROBOT_FILL  # noqa: E402
-from tb3_sim.scene import Trail, scene_of  # noqa: E402
-from tb3_sim.window import SimWindow  # noqa: E402
-from tb3_sim.world import World  # noqa: E402
-from tb3_sim.world_file import load_world, shipped_world_path  # noqa: E402
+from tb3_sim.core.geometry import Pose2D  # noqa: E402
+from tb3_sim.core.world import World  # noqa: E402
+from tb3_sim.core.world_file import load_world, shipped_world_path  # noqa: E402
+from tb3_sim.view.box_tool import BoxTool  # noqa: E402
+from tb3_sim.view.renderer import ROBOT_FILL  # noqa: E402
+from tb3_sim.view.scene import Trail, scene_of  # noqa: E402
+from tb3_sim.view.window import SimWindow  # noqa: E402
 
 
 @pytest.fixture(scope="module")

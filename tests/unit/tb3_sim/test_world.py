@@ -4,12 +4,13 @@ import math
 
 import pytest
 
-from tb3_sim.errors import DuplicateModelError, OverlapError, ProtectedModelError, SimError, UnknownModelError
-from tb3_sim.geometry import Pose2D, Twist2D
-from tb3_sim.robot_model import WAFFLE_BODY_X_MAX_M
-from tb3_sim.shapes import Box, Cylinder, Polygon, Segment
-from tb3_sim.world import PHYSICS_STEP_S, World
-from tb3_sim.world_file import ModelSpec, WorldDescription, load_world, shipped_world_path
+from tb3_sim.core.errors import DuplicateModelError, OverlapError, ProtectedModelError, SimError, UnknownModelError
+from tb3_sim.core.geometry import Pose2D, Twist2D
+from tb3_sim.core.lidar import Lidar
+from tb3_sim.core.shapes import Box, Cylinder, Polygon, Segment
+from tb3_sim.core.waffle import WAFFLE_BODY_X_MAX_M
+from tb3_sim.core.world import PHYSICS_STEP_S, World
+from tb3_sim.core.world_file import ModelSpec, WorldDescription, load_world, shipped_world_path
 
 EMPTY = WorldDescription("empty")
 
@@ -217,25 +218,26 @@ def test_reset_world_keeps_time_and_spawned_models():
 
 
 def test_reset_simulation_rewinds_time_and_repeats_the_run():
-    world = World(load_world(shipped_world_path("approach_arena")), seed=4)
+    world, lidar = World(load_world(shipped_world_path("approach_arena"))), Lidar(seed=4)
     world.robot.set_command(0.2, 0.4)
     world.run(1.0)
-    first_pose, first_scan = world.robot.pose, world.scan().ranges
+    first_pose, first_scan = world.robot.pose, lidar.read(world, world.time_s).ranges
     drive_and_disturb(world)
     world.reset_simulation()
     assert world.time_s == 0.0
     assert_back_at_start(world)
     world.delete_model("spawned")
     world.reset_simulation()
+    lidar.reset()
     world.robot.set_command(0.2, 0.4)
     world.run(1.0)
     assert world.robot.pose == pytest.approx(first_pose, abs=1e-4)
-    assert world.scan().ranges == pytest.approx(first_scan, abs=1e-3)
+    assert lidar.read(world, world.time_s).ranges == pytest.approx(first_scan, abs=1e-3)
 
 
 def test_robot_start_in_turtlebot3_world_is_clear_and_sees_the_wall_behind():
     world = World(load_world(shipped_world_path("turtlebot3_world")), Pose2D(-2.0, -0.5, 0.0))
-    ranges = world.scan().ranges
+    ranges = Lidar().read(world, world.time_s).ranges
     inner_wall_x_at_y = -2.93 + 0.5 / math.tan(math.radians(60))
     assert ranges[180] == pytest.approx(-2.064 - inner_wall_x_at_y, abs=0.05)
     world.robot.set_command(0.26, 0.0)

@@ -4,10 +4,10 @@ from pathlib import Path
 
 import pytest
 
-from tb3_sim.errors import SimError, WorldFileError
-from tb3_sim.geometry import Pose2D
-from tb3_sim.shapes import Box, Circle, Cylinder, Polygon
-from tb3_sim.world_file import load_world, parse_world, shipped_world_path
+from tb3_sim.core.errors import SimError, WorldFileError
+from tb3_sim.core.geometry import Pose2D
+from tb3_sim.core.shapes import Box, Circle, Cylinder, Polygon
+from tb3_sim.core.world_file import load_world, parse_world, shipped_world_path
 
 INVALID = Path(__file__).parent / "fixtures" / "invalid_worlds"
 

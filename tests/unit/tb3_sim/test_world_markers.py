@@ -6,11 +6,11 @@ import pytest
 import rospy
 from visualization_msgs.msg import Marker
 
-from tb3_sim import load_world, shipped_world_path
-from tb3_sim.geometry import Pose2D
-from tb3_sim.scene import ModelView
-from tb3_sim.shapes import Box, Circle, Cylinder, Polygon, Segment
-from tb3_sim.world_markers import world_markers
+from tb3_sim.core import load_world, shipped_world_path
+from tb3_sim.core.geometry import Pose2D
+from tb3_sim.core.shapes import Box, Circle, Cylinder, Polygon, Segment
+from tb3_sim.ros.outputs.world_markers import world_markers
+from tb3_sim.view.scene import ModelView
 
 STAMP = rospy.Time(12, 0)
 

@@ -33,7 +33,7 @@ def params():
 
 @pytest.fixture
 def make_sim(log, params):
-    from turtlesim.simulation import TurtleSim
+    from turtlesim.core.simulation import TurtleSim
 
     def make(node_name='/turtlesim'):
         return TurtleSim(node_name, params.get, log, random.Random(7))

@@ -2,10 +2,10 @@
 from PyQt5.QtCore import Qt
 from PyQt5.QtGui import QImage, QPen, qRed
 
-from turtlesim.canvas import Canvas, make_qpen, world_to_screen
-from turtlesim.constants import DT, WORLD_CENTRE
-from turtlesim.pen import DEFAULT_PEN, Pen
-from turtlesim.turtle import TeleportAbsolute, Turtle
+from turtlesim.core.canvas import Canvas, make_qpen, world_to_screen
+from turtlesim.core.constants import DT, WORLD_CENTRE
+from turtlesim.core.pen import DEFAULT_PEN, Pen
+from turtlesim.core.turtle import TeleportAbsolute, Turtle
 
 BACKGROUND = (69, 86, 255)
 RED = (255, 0, 0)

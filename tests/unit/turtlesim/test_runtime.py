@@ -6,9 +6,9 @@ import termios
 
 import pytest
 
-from turtlesim.display import X11_TCP_BASE_PORT, display_reachable, x_server_address
-from turtlesim.terminal import NotATerminalError, RawTerminal
-from turtlesim.ticker import run_ticks
+from turtlesim.core.ticker import run_ticks
+from turtlesim.tools.terminal import NotATerminalError, RawTerminal
+from turtlesim.view.display import X11_TCP_BASE_PORT, display_reachable, x_server_address
 
 
 class FakeClock:
@@ -79,7 +79,7 @@ def test_a_display_nobody_listens_on_is_unreachable():
 
 def test_a_listening_x_socket_is_reachable(monkeypatch, tmp_path):
     path = str(tmp_path / 'X7')
-    monkeypatch.setattr('turtlesim.display.X11_SOCKET', str(tmp_path / 'X%d'))
+    monkeypatch.setattr('turtlesim.view.display.X11_SOCKET', str(tmp_path / 'X%d'))
     with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as server:
         server.bind(path)
         server.listen(1)

@@ -3,11 +3,16 @@ import math
 
 import pytest
 
-from turtlesim.background import param_as_int, read_background
-from turtlesim.canvas import world_to_screen
-from turtlesim.errors import (DuplicateNameError, InvalidNameError, NonFiniteValueError,
-                              TurtleSimError, UnknownTurtleError)
-from turtlesim.log import LogLevel
+from turtlesim.core.background import param_as_int, read_background
+from turtlesim.core.canvas import world_to_screen
+from turtlesim.core.errors import (
+    DuplicateNameError,
+    InvalidNameError,
+    NonFiniteValueError,
+    TurtleSimError,
+    UnknownTurtleError,
+)
+from turtlesim.core.log import LogLevel
 
 NAN = float('nan')
 INF = float('inf')

@@ -5,10 +5,10 @@ import numpy
 import pytest
 from PyQt5.QtCore import QPointF
 
-from turtlesim.canvas import Canvas
-from turtlesim.constants import CMD_TIMEOUT, DT, WORLD_CENTRE, WORLD_SIZE
-from turtlesim.geometry import qt_fuzzy_equal, wrap_heading
-from turtlesim.turtle import TeleportAbsolute, TeleportRelative, Turtle
+from turtlesim.core.canvas import Canvas
+from turtlesim.core.constants import CMD_TIMEOUT, DT, WORLD_CENTRE, WORLD_SIZE
+from turtlesim.core.geometry import qt_fuzzy_equal, wrap_heading
+from turtlesim.core.turtle import TeleportAbsolute, TeleportRelative, Turtle
 
 SPEC_PI = 3.14159265
 

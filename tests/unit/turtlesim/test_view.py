@@ -3,11 +3,11 @@ import random
 
 from PyQt5.QtGui import QImage
 
-from turtlesim.constants import TURTLE_IMAGE_COUNT, WORLD_CENTRE
-from turtlesim.simulation import TurtleSim
-from turtlesim.sprites import LOOKS, SPRITE_SIZE_PX, draw_sprite
-from turtlesim.turtle import Turtle
-from turtlesim.view import SceneRenderer, sprite_rotation_degrees
+from turtlesim.core.constants import TURTLE_IMAGE_COUNT, WORLD_CENTRE
+from turtlesim.core.simulation import TurtleSim
+from turtlesim.core.turtle import Turtle
+from turtlesim.view.scene_renderer import SceneRenderer, sprite_rotation_degrees
+from turtlesim.view.sprites import LOOKS, SPRITE_SIZE_PX, draw_sprite
 
 CENTRE_PX = 249
 

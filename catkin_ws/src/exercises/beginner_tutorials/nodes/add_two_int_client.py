@@ -7,6 +7,7 @@ so does a missing service (after SERVICE_WAIT_S) or a refused request, with the 
 import sys
 
 import rospy
+
 from beginner_tutorials.addition import parse_addends, usage
 from beginner_tutorials.errors import UsageError
 from beginner_tutorials.srv import add_two_int

@@ -5,6 +5,7 @@ A sum outside int64 cannot be put in the response, so it is refused with a Servi
 names the range (the caller sees "service cannot process request: ..."), and the server keeps serving.
 """
 import rospy
+
 from beginner_tutorials.addition import checked_sum
 from beginner_tutorials.errors import SumOutOfRangeError
 from beginner_tutorials.srv import add_two_int, add_two_intResponse

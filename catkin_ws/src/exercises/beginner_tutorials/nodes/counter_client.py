@@ -9,6 +9,7 @@ import sys
 
 import actionlib
 import rospy
+
 from beginner_tutorials.counter_options import parse_counter_options, usage
 from beginner_tutorials.errors import UsageError
 from beginner_tutorials.goal_states import client_exit_code, goal_state_name

@@ -7,6 +7,7 @@ the count reached in the result; num_counts below 1 is aborted with the reason i
 """
 import actionlib
 import rospy
+
 from beginner_tutorials.counting import COMPLETE_MESSAGE, COUNT_RATE_HZ, CountingTask
 from beginner_tutorials.errors import CountError
 from beginner_tutorials.msg import counterAction, counterFeedback, counterResult

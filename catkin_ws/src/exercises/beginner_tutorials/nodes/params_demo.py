@@ -5,6 +5,7 @@ It uses a global, a relative and a private name (see beginner_tutorials/paramete
 with a default, and deletes everything it set, so it leaves the parameter server as it found it.
 """
 import rospy
+
 from beginner_tutorials.parameters import DEMO_PARAMETERS, MISSING_DEFAULT, MISSING_NAME
 
 

@@ -8,6 +8,7 @@ trying; a DIRECTION outside 0..359 prints the usage and exits with 1.
 import sys
 
 import rospy
+
 from beginner_tutorials.errors import UsageError
 from beginner_tutorials.scan_lookup import parse_direction, usage
 from beginner_tutorials.srv import gazebo_server

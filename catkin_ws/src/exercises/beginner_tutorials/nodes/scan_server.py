@@ -6,10 +6,11 @@ degrees counter-clockwise from ahead (0..359 on the TurtleBot3). Before the firs
 the scan does not have, the call fails with a ServiceException saying why; the server keeps serving.
 """
 import rospy
+from sensor_msgs.msg import LaserScan
+
 from beginner_tutorials.errors import ScanLookupError
 from beginner_tutorials.scan_lookup import SCAN_TOPIC, range_at
 from beginner_tutorials.srv import gazebo_server, gazebo_serverResponse
-from sensor_msgs.msg import LaserScan
 
 
 class ScanServer:

@@ -6,6 +6,7 @@ import actionlib
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
+
 from beginner_tutorials.msg import counterAction, counterGoal
 
 SERVER_WAIT_S = 20.0

@@ -4,9 +4,9 @@ import sys
 
 import rospy
 import tf2_ros
-from turtlesim.msg import Pose
 
 from learning_tf2.ros_frames import transform
+from turtlesim.msg import Pose
 
 
 class TurtleFrameBroadcaster:

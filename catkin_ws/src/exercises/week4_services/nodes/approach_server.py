@@ -12,9 +12,9 @@ silent for 1 s (the simulator died): stops and replies with the failure.
 import rospy
 from tuos_msgs.srv import Approach, ApproachResponse
 
+from tb3_client.robot import Robot, RobotError
 from week4_services.approach import TIME_LIMIT_S, ApproachController, Outcome
 from week4_services.requests import InvalidRequest, approach
-from tb3_client.robot import Robot, RobotError
 
 NODE_NAME = "approach_service_server"
 SERVICE_NAME = "approach_service"

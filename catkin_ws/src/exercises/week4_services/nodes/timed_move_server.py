@@ -9,9 +9,13 @@ success False, the reason in the log, and no motion.
 import rospy
 from tuos_msgs.srv import TimedMovement, TimedMovementResponse
 
-from week4_services.requests import (DEFAULT_ANGULAR_SPEED_RADPS, DEFAULT_LINEAR_SPEED_MPS, InvalidRequest,
-                                     timed_movement)
 from tb3_client.robot import Robot, RobotError
+from week4_services.requests import (
+    DEFAULT_ANGULAR_SPEED_RADPS,
+    DEFAULT_LINEAR_SPEED_MPS,
+    InvalidRequest,
+    timed_movement,
+)
 
 NODE_NAME = "timed_move_service_server"
 SERVICE_NAME = "timed_move_service"

@@ -7,10 +7,10 @@ politely: one throttled log line, no exception, no motion.
 import rospy
 import tf2_ros
 from geometry_msgs.msg import Twist
-from turtlesim.srv import Spawn
 
 from learning_tf2.follow import follow_command
 from learning_tf2.ros_frames import LOOKUP_ERRORS, log_waiting
+from turtlesim.srv import Spawn
 
 CONTROL_RATE_HZ = 10
 FOLLOWER_SPAWN_POSE = (4.0, 2.0, 0.0)

@@ -12,9 +12,9 @@ import rospy
 from std_srvs.srv import Empty
 from tuos_msgs.srv import Approach, SetBool, TimedMovement
 
-from week4_services.demo_tour import TOUR, Pose, describe_outcome, describe_request, format_table
 from tb3_client.robot import Robot, RobotError
 from tb3_client.scan_ahead import closest_ahead
+from week4_services.demo_tour import TOUR, Pose, describe_outcome, describe_request, format_table
 
 SERVICE_TYPES = {"/move_service": SetBool, "/timed_move_service": TimedMovement, "/approach_service": Approach}
 SNAPSHOT_SERVICE = "/gazebo/snapshot"

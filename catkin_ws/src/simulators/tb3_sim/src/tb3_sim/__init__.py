@@ -1,20 +1,8 @@
-"""tb3_sim: a Box2D TurtleBot3 Waffle simulator core with Gazebo's conventions; no ROS imports here."""
+"""tb3_sim: a Box2D TurtleBot3 Waffle simulator with Gazebo's topics, services and conventions.
 
-from tb3_sim.diff_drive import DiffDrive, validate_command
-from tb3_sim.errors import (DuplicateModelError, InvalidCommandError, OverlapError, ProtectedModelError, SimError,
-                            UnknownModelError, WorldFileError)
-from tb3_sim.geometry import Pose2D, Twist2D, quaternion_to_yaw, wrap_angle, yaw_to_quaternion
-from tb3_sim.imu import Imu, ImuReading
-from tb3_sim.lidar import Lidar, ScanResult
-from tb3_sim.schedule import PeriodicSchedule
-from tb3_sim.shapes import Box, Circle, Cylinder, Polygon, Segment
-from tb3_sim.world import ModelState, World
-from tb3_sim.world_file import ModelSpec, WorldDescription, load_world, parse_world, shipped_world_path
-
-__all__ = [
-    "Box", "Circle", "Cylinder", "DiffDrive", "DuplicateModelError", "Imu", "ImuReading", "InvalidCommandError",
-    "Lidar", "ModelSpec", "ModelState", "OverlapError", "PeriodicSchedule", "Polygon", "Pose2D",
-    "ProtectedModelError", "ScanResult", "Segment", "SimError", "Twist2D", "UnknownModelError", "World",
-    "WorldDescription", "WorldFileError", "load_world", "parse_world", "quaternion_to_yaw", "shipped_world_path",
-    "validate_command", "wrap_angle", "yaw_to_quaternion",
-]
+Layers, each importing only the ones before it:
+- `tb3_sim.core`: the simulation (world, bodies, robot and drive, sensors, world files, model XML); no rospy;
+- `tb3_sim.ros`: the node (`gazebo`), the /gazebo/* API, message conversion and the periodic outputs;
+- `tb3_sim.view`: what a person looks at: the scene, the top-down renderer, the Qt window and its box tool;
+- `tb3_sim.tools`: command-line tools (spawn_box, spawn_model) and the core benchmark.
+"""

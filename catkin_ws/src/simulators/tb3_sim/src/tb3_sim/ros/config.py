@@ -1,0 +1,124 @@
+"""The simulator node's parameters as one validated, typed object (no ROS imports: the node passes a dict).
+
+Private parameters (all optional; see `ros_node` for what each one does):
+
+    ~world                   "empty"    a shipped world name (empty, turtlebot3_world, approach_arena) or a path
+                                        to a world YAML file
+    ~x_pos, ~y_pos, ~yaw     0.0        robot spawn pose in the world frame (m, m, rad)
+    ~robot_name              "turtlebot3_waffle"  the robot's model name in /gazebo/* services
+    ~seed                    0          LiDAR noise seed (int)
+    ~real_time_factor        1.0        sim seconds per wall second; any value > 0, or 0 = as fast as possible
+    ~lidar_sees_low_objects  false      true: the scan also sees models lower than the 0.132 m scan plane
+    ~clamp_command           false      true: clamp /cmd_vel to 0.26 m/s and 1.82 rad/s (Gazebo does not)
+    ~paused                  false      start with physics paused (as gazebo's `paused` arg)
+    ~headless                false      true: never open a window; false: a window when $DISPLAY is set
+    ~snapshot_path           "/tmp/tb3_sim.png"  where the ~snapshot service writes its PNG
+    ~publish_static_tf       true       publish the Waffle's fixed joints on /tf_static
+"""
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+from tb3_sim.core.errors import ConfigError
+from tb3_sim.core.waffle import WAFFLE_MODEL_NAME
+
+DEFAULT_WORLD = "empty"
+DEFAULT_SNAPSHOT_PATH = "/tmp/tb3_sim.png"
+WORLD_FILE_SUFFIX = ".yaml"
+
+
+@dataclass(frozen=True)
+class SimConfig:
+    """Validated node settings; `world_path` is resolved to an existing file."""
+
+    world_path: Path
+    x_pos: float = 0.0
+    y_pos: float = 0.0
+    yaw: float = 0.0
+    robot_name: str = WAFFLE_MODEL_NAME
+    seed: int = 0
+    real_time_factor: float = 1.0
+    lidar_sees_low_objects: bool = False
+    clamp_command: bool = False
+    paused: bool = False
+    headless: bool = False
+    snapshot_path: str = DEFAULT_SNAPSHOT_PATH
+    publish_static_tf: bool = True
+
+
+def resolve_world(value, worlds_dir):
+    """Path of the world file named by `value`: a shipped world's name (looked up in `worlds_dir`) or a path.
+
+    Raises ConfigError naming the shipped worlds if there is no such file.
+    """
+    if not isinstance(value, str) or not value.strip():
+        raise ConfigError(f"~world must be a world name or a file path, got {value!r}")
+    worlds_dir = Path(worlds_dir)
+    is_path = value.endswith(WORLD_FILE_SUFFIX) or "/" in value
+    path = Path(value).expanduser() if is_path else worlds_dir / (value + WORLD_FILE_SUFFIX)
+    if not path.is_file():
+        shipped = ", ".join(sorted(p.stem for p in worlds_dir.glob("*" + WORLD_FILE_SUFFIX)))
+        raise ConfigError(f"~world: no world file {path} (shipped worlds: {shipped}; or give a path to a "
+                          f"{WORLD_FILE_SUFFIX} file)")
+    return path
+
+
+def config_from_params(params, worlds_dir):
+    """A SimConfig from the node's private parameters `params` (a dict, e.g. rospy.get_param("~")).
+
+    Unknown keys are ignored (launch files may set more); bad types and values raise ConfigError.
+    """
+    reader = _ParamReader(params)
+    return SimConfig(
+        world_path=resolve_world(params.get("world", DEFAULT_WORLD), worlds_dir),
+        x_pos=reader.number("x_pos", 0.0),
+        y_pos=reader.number("y_pos", 0.0),
+        yaw=reader.number("yaw", 0.0),
+        robot_name=reader.name("robot_name", WAFFLE_MODEL_NAME),
+        seed=reader.integer("seed", 0),
+        real_time_factor=reader.number("real_time_factor", 1.0, minimum=0.0),
+        lidar_sees_low_objects=reader.flag("lidar_sees_low_objects", False),
+        clamp_command=reader.flag("clamp_command", False),
+        paused=reader.flag("paused", False),
+        headless=reader.flag("headless", False),
+        snapshot_path=reader.text("snapshot_path", DEFAULT_SNAPSHOT_PATH),
+        publish_static_tf=reader.flag("publish_static_tf", True),
+    )
+
+
+class _ParamReader:
+    def __init__(self, params):
+        self._params = params
+
+    def number(self, key, default, minimum=None):
+        value = self._params.get(key, default)
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+            raise ConfigError(f"~{key} must be a finite number, got {value!r}")
+        if minimum is not None and value < minimum:
+            raise ConfigError(f"~{key} must be >= {minimum}, got {value!r}")
+        return float(value)
+
+    def integer(self, key, default):
+        value = self._params.get(key, default)
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise ConfigError(f"~{key} must be an integer, got {value!r}")
+        return value
+
+    def flag(self, key, default):
+        value = self._params.get(key, default)
+        if value is not default and not isinstance(value, bool):
+            raise ConfigError(f"~{key} must be true or false, got {value!r}")
+        return value
+
+    def name(self, key, default):
+        value = self._params.get(key, default)
+        if not isinstance(value, str) or not value or any(c.isspace() for c in value):
+            raise ConfigError(f"~{key} must be a non-empty string without spaces, got {value!r}")
+        return value
+
+    def text(self, key, default):
+        value = self._params.get(key, default)
+        if not isinstance(value, str) or not value.strip():
+            raise ConfigError(f"~{key} must be a non-empty string, got {value!r}")
+        return value

@@ -1,0 +1,298 @@
+"""The ROS 1 node around the simulation core: Gazebo's TurtleBot3 Waffle topics, /clock and /gazebo/* services.
+
+Node name `gazebo` (as gzserver's), so its private services are /gazebo/reset_world and so on.
+
+Subscribes: `cmd_vel` (geometry_msgs/Twist, queue 1; linear.x and angular.z held until the next message, no
+  timeout; NaN, inf or absurd values are ignored with a throttled warning and the previous command is kept);
+  /gazebo/set_model_state (gazebo_msgs/ModelState).
+Publishes: /clock every physics step (5 ms of sim time); `odom` (nav_msgs/Odometry), /tf odom -> base_footprint
+  and `joint_states` at 30 Hz; `scan` (sensor_msgs/LaserScan) at 5 Hz; `imu` (sensor_msgs/Imu) at 100 Hz;
+  /gazebo/model_states at 100 Hz (the last three only while subscribed); /tf_static (latched) with the Waffle's
+  fixed joints unless ~publish_static_tf is false; ~world_markers (visualization_msgs/MarkerArray, latched, and
+  again at 2 Hz while subscribed: walls, models, the robot's body, for rviz/tb3_sim.rviz). All rates are in
+  simulated time; each periodic output is one object registered in tb3_sim.ros.outputs.registry.
+Services: /gazebo/{reset_world, reset_simulation, pause_physics, unpause_physics, spawn_sdf_model,
+  spawn_urdf_model, delete_model, get_model_state, set_model_state, get_world_properties} (see gazebo_api),
+  and ~snapshot (std_srvs/Empty): write a top-down PNG of the world (walls, models, robot, its trail, the
+  latest laser rays; see renderer) to ~snapshot_path; an unwritable path fails the call with the reason.
+Parameters: see tb3_sim.ros.config (~world, ~x_pos, ~y_pos, ~yaw, ~robot_name, ~seed, ~real_time_factor,
+  ~lidar_sees_low_objects, ~clamp_command, ~paused, ~headless, ~snapshot_path, ~publish_static_tf).
+/use_sim_time is set to true before the node starts if it is absent, as gazebo_ros does. If roscore is
+restarted, the node registers everything again with the new master and sets /use_sim_time there too
+(master_reconnect).
+View: when $DISPLAY (or $WAYLAND_DISPLAY) is set and ~headless is false, a top-down window (see window) shows
+the world and offers the Gazebo box tool; physics then runs in a second thread while Qt owns the main thread.
+Closing the window leaves the simulation running headless, as closing gzclient leaves gzserver; Ctrl-C stops
+both. Without a display the node is headless with identical ROS behaviour.
+
+Threads: the main thread (with a window: a "physics" thread) steps physics and publishes; rospy runs every
+callback in its own thread. One lock guards the world: callbacks change it only between two steps. Publishers
+write synchronously from the loop thread (see `_synchronous_publisher`).
+
+Time: physics runs in simulated time and every stamp is the world's time. The node is the clock, so it does not
+subscribe to its own /clock (rospy's `disable_rostime`: at 200 Hz x the real-time factor that echo would cost a
+third of the loop); its rospy time, used only for log stamps and warning throttles, is therefore wall time, and
+so is the pacing of steps (`~real_time_factor`).
+"""
+
+import os
+import sys
+import threading
+import time
+import warnings
+from contextlib import contextmanager
+from pathlib import Path
+
+import rosgraph
+import rospkg
+import rospy
+from geometry_msgs.msg import Twist
+from std_srvs.srv import Empty, EmptyResponse
+from tf2_msgs.msg import TFMessage
+
+from master_reconnect import keep_registered
+from tb3_sim.core.diff_drive import validate_command
+from tb3_sim.core.errors import SimError
+from tb3_sim.core.geometry import Pose2D
+from tb3_sim.core.pacing import Pacer
+from tb3_sim.core.schedule import PeriodicSchedule
+from tb3_sim.core.waffle import WAFFLE_STATIC_TRANSFORMS
+from tb3_sim.core.world import World
+from tb3_sim.core.world_file import load_world
+from tb3_sim.ros import messages
+from tb3_sim.ros.config import config_from_params
+from tb3_sim.ros.gazebo_api import GazeboApi
+from tb3_sim.ros.outputs import OutputPublisher, registered_outputs
+from tb3_sim.ros.outputs.scan import ScanOutput
+from tb3_sim.view.scene import Trail, scene_of
+
+NODE_NAME = "gazebo"
+PACKAGE = "tb3_sim"
+USE_SIM_TIME_PARAM = "/use_sim_time"
+WARNING_THROTTLE_S = 5.0
+PAUSED_POLL_S = 0.05
+MASTER_RETRY_S = 1.0
+TRAIL_RATE_HZ = 30.0
+SHUTDOWN_CHECK_MS = 100
+
+
+class SimNode:
+    """Owns the world, the lock around it, the pause flag and the publishing loop (`spin`)."""
+
+    def __init__(self, config, world):
+        self.config = config
+        self._world = world
+        self._lock = threading.Lock()
+        self._window_open = threading.Event()
+        self._running = threading.Event()
+        if not config.paused:
+            self._running.set()
+        self._pacer = Pacer(config.real_time_factor)
+        self._outputs = OutputPublisher(registered_outputs(config), _publisher)
+        self._scan = self._outputs.output(ScanOutput)
+        if config.publish_static_tf:
+            self._static_tf = rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True)
+            self._static_tf.publish(messages.static_tf_message(world.time_s, WAFFLE_STATIC_TRANSFORMS))
+        self._cmd_vel = rospy.Subscriber("cmd_vel", Twist, self._on_cmd_vel, queue_size=1)
+        self._trail = Trail()
+        self._trail_schedule = PeriodicSchedule(TRAIL_RATE_HZ)
+        self._services = GazeboApi(self).advertise()
+        self._snapshot = rospy.Service("~snapshot", Empty, self._on_snapshot)
+        for publisher, message in self._outputs.latched(world):
+            publisher.publish(message)
+
+    @contextmanager
+    def locked_world(self):
+        """The world, for use between two physics steps (hold it briefly: physics waits)."""
+        with self._lock:
+            yield self._world
+
+    @property
+    def rendering_enabled(self):
+        """True while a window draws the world (get_world_properties); headless runs answer False."""
+        return self._window_open.is_set()
+
+    def scene(self):
+        """A Scene of the world now, with the latest published scan (for a window: no extra LiDAR sweeps)."""
+        with self._lock:
+            return scene_of(self._world, self._trail, self._scan.recent(self._world.time_s))
+
+    @property
+    def paused(self):
+        return not self._running.is_set()
+
+    def pause(self):
+        self._running.clear()
+
+    def unpause(self):
+        self._running.set()
+
+    def reset_world(self):
+        """Models and robot back to their initial poses, command zeroed; sim time keeps running."""
+        with self._lock:
+            self._world.reset_world()
+            self._outputs.forget_motion()
+            self._trail.clear()
+
+    def reset_simulation(self):
+        """reset_world plus sim time back to 0 (/clock jumps back, as Gazebo's does)."""
+        with self._lock:
+            self._world.reset_simulation()
+            self._outputs.reset(self._world.time_s)
+            self._trail_schedule.reset(self._world.time_s)
+            self._trail.clear()
+
+    def window_opened(self):
+        self._window_open.set()
+
+    def window_closed(self):
+        self._window_open.clear()
+        rospy.loginfo("tb3_sim: window closed; the simulation keeps running headless (Ctrl-C stops it)")
+
+    def teleported(self):
+        """Tell the sensors a model was moved by a service (call with the world locked)."""
+        self._outputs.forget_motion()
+
+    def _on_cmd_vel(self, message):
+        linear, angular = message.linear.x, message.angular.z
+        reason = validate_command(linear, angular)
+        if reason is not None:
+            rospy.logwarn_throttle(WARNING_THROTTLE_S, f"cmd_vel ignored: {reason}; keeping the previous command")
+            return
+        with self._lock:
+            self._world.robot.set_command(linear, angular)
+
+    def _on_snapshot(self, _request):
+        from tb3_sim.view.renderer import save_png  # Qt is loaded on the first snapshot only (or by the window)
+        with self._lock:
+            scene = scene_of(self._world, self._trail, self._scan.for_view(self._world))
+        try:
+            save_png(scene, self.config.snapshot_path)
+        except OSError as error:
+            raise rospy.ServiceException(f"snapshot: {error}") from None
+        rospy.loginfo(f"snapshot written to {self.config.snapshot_path}")
+        return EmptyResponse()
+
+    def spin(self):
+        """Step, publish and pace until ROS shuts down."""
+        while not rospy.is_shutdown():
+            if not self._running.wait(PAUSED_POLL_S):
+                self._pacer.restart(self._world.time_s, time.monotonic())
+                continue
+            with self._lock:
+                now_s = self._world.step()
+                outgoing = self._outputs.collect(self._world)
+                if self._trail_schedule.due(now_s):
+                    self._trail.add(*self._world.robot.pose[:2])
+            try:
+                for publisher, message in outgoing:
+                    publisher.publish(message)
+            except rospy.ROSException:
+                if rospy.is_shutdown():
+                    return   # Ctrl-C closed the publishers after the loop's shutdown check
+                raise
+            delay_s = self._pacer.delay(now_s, time.monotonic())
+            if delay_s:
+                time.sleep(delay_s)
+
+
+def run_with_window(node):
+    """Show the window in the main thread (Qt's rule) and step physics in another until ROS shuts down."""
+    from PyQt5.QtCore import QTimer
+    from PyQt5.QtWidgets import QApplication
+
+    from tb3_sim.view.box_tool import BoxTool
+    from tb3_sim.view.window import SimWindow
+
+    app = QApplication.instance() or QApplication([sys.argv[0]])
+    window = SimWindow(node.scene, BoxTool(node), on_close=node.window_closed, log=rospy.loginfo)
+    physics = threading.Thread(target=node.spin, name="physics", daemon=True)
+    shutdown_check = QTimer()
+    shutdown_check.timeout.connect(lambda: rospy.is_shutdown() and app.quit())
+    shutdown_check.start(SHUTDOWN_CHECK_MS)
+    node.window_opened()
+    window.show()
+    physics.start()
+    app.exec_()
+    while physics.is_alive():
+        physics.join(PAUSED_POLL_S)
+
+
+def has_display():
+    return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
+
+
+def _publisher(topic):
+    """The rospy publisher of an output's `topic`: latched ones queue one message, the others are synchronous."""
+    if topic.latch:
+        return rospy.Publisher(topic.name, topic.message_class, queue_size=1, latch=True)
+    return _synchronous_publisher(topic.name, topic.message_class)
+
+
+def _synchronous_publisher(name, message_class):
+    """A publisher that writes to its subscribers' sockets in the calling thread (rospy's queue_size=None).
+
+    On purpose: rospy's queued publishers hand every message to a writer thread per subscriber, and that
+    thread hand-off costs more than the whole physics step; publishing from the loop thread makes the
+    simulator 3-4x faster. The catch: a subscriber process that stops reading altogether (suspended with
+    Ctrl-Z) holds the loop up once its TCP buffer is full. rospy's SyntaxWarning about the missing queue
+    size is silenced here because the choice is deliberate.
+    """
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", SyntaxWarning)
+        return rospy.Publisher(name, message_class, queue_size=None)
+
+
+def worlds_dir():
+    """The shipped worlds folder of the tb3_sim package, found through the ROS package path."""
+    return Path(rospkg.RosPack().get_path(PACKAGE)) / "worlds"
+
+
+def ensure_use_sim_time():
+    """Set /use_sim_time to true on the master if no one has set it (launch files set it themselves).
+
+    Waits for the master like rospy.init_node does, so `rosrun` before `roscore` just waits.
+    """
+    master = rosgraph.Master(NODE_NAME)
+    waiting = False
+    while True:
+        try:
+            if not master.hasParam(USE_SIM_TIME_PARAM):
+                master.setParam(USE_SIM_TIME_PARAM, True)
+            return
+        except OSError:
+            if not waiting:
+                print(f"tb3_sim: waiting for the ROS master at {rosgraph.get_master_uri()}", file=sys.stderr)
+                waiting = True
+            time.sleep(MASTER_RETRY_S)
+
+
+def build_world(config):
+    """The World the config describes; raises SimError (WorldFileError, ConfigError...) with a clear message."""
+    description = load_world(config.world_path)
+    return World(description, Pose2D(config.x_pos, config.y_pos, config.yaw), config.robot_name,
+                 clamp_command=config.clamp_command)
+
+
+def main():
+    """Entry point of `rosrun tb3_sim tb3_sim_node`; exits 1 with a one-line reason on bad parameters."""
+    try:
+        ensure_use_sim_time()
+        rospy.init_node(NODE_NAME, disable_rostime=True)
+        try:
+            config = config_from_params(rospy.get_param("~", {}), worlds_dir())
+            world = build_world(config)
+        except SimError as error:
+            rospy.logfatal(f"tb3_sim: {error}")
+            sys.exit(1)
+        node = SimNode(config, world)
+        keep_registered(on_reregistered=ensure_use_sim_time)
+        rospy.loginfo(f"tb3_sim: world '{world.description.name}', robot '{config.robot_name}' at "
+                      f"({config.x_pos}, {config.y_pos}, yaw {config.yaw}), real_time_factor "
+                      f"{config.real_time_factor:g}{', paused' if config.paused else ''}")
+        if not config.headless and has_display():
+            run_with_window(node)
+        else:
+            node.spin()
+    except (KeyboardInterrupt, rospy.ROSInterruptException):
+        pass

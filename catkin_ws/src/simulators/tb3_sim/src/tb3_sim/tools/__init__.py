@@ -1,0 +1,1 @@
+"""Command-line tools over the ROS interface (spawn_box, spawn_model) and the core benchmark."""

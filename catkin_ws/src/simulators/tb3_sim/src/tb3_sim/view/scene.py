@@ -1,0 +1,103 @@
+"""What a view draws, copied out of the world between two physics steps (so drawing never races physics).
+
+A `Scene` is immutable plain data in the world frame (metres, radians). `Trail` records where the robot has
+been, for the view only.
+"""
+
+import math
+from dataclasses import dataclass
+from typing import Optional, Tuple
+
+import numpy as np
+
+from tb3_sim.core.geometry import Pose2D
+from tb3_sim.core.lidar import ScanResult, beam_angles
+from tb3_sim.core.waffle import waffle_footprint
+
+# Trail: a point every 1 cm at most, 5000 points (50 m of driving); a jump of more than 0.5 m between two
+# points (a teleport or a reset) starts a new stroke instead of drawing a line across the world.
+TRAIL_SPACING_M = 0.01
+TRAIL_MAX_POINTS = 5000
+TRAIL_JUMP_M = 0.5
+
+
+class Trail:
+    """The robot's recent path as strokes (lists of (x, y) points), oldest points dropped first."""
+
+    def __init__(self, spacing_m=TRAIL_SPACING_M, max_points=TRAIL_MAX_POINTS, jump_m=TRAIL_JUMP_M):
+        self.spacing_m = spacing_m
+        self.max_points = max_points
+        self.jump_m = jump_m
+        self.clear()
+
+    def clear(self):
+        self._strokes = [[]]
+        self._count = 0
+
+    def add(self, x, y):
+        """Record the robot at (x, y) if it has moved at least `spacing_m` since the last point."""
+        stroke = self._strokes[-1]
+        if stroke:
+            distance = math.hypot(x - stroke[-1][0], y - stroke[-1][1])
+            if distance < self.spacing_m:
+                return
+            if distance > self.jump_m:
+                stroke = []
+                self._strokes.append(stroke)
+        stroke.append((x, y))
+        self._count += 1
+        if self._count > self.max_points:
+            self._strokes[0].pop(0)
+            self._count -= 1
+            if not self._strokes[0] and len(self._strokes) > 1:
+                self._strokes.pop(0)
+
+    def strokes(self):
+        """The strokes as tuples of points, oldest first."""
+        return tuple(tuple(stroke) for stroke in self._strokes if stroke)
+
+
+@dataclass(frozen=True)
+class ModelView:
+    """A box or cylinder model to draw: `shape` (shapes.Box or shapes.Cylinder) at `pose`."""
+
+    name: str
+    shape: object
+    pose: Pose2D
+    static: bool
+
+
+@dataclass(frozen=True)
+class Scene:
+    """Everything a top-down view needs: static shapes (shapes.Segment/Polygon/Circle), models, the robot's
+    pose and outlines (in base_footprint), trail strokes, and the latest scan with its origin (or None)."""
+
+    static_shapes: Tuple
+    models: Tuple[ModelView, ...]
+    robot_pose: Pose2D
+    robot_outlines: Tuple
+    trail: Tuple
+    scan: Optional[ScanResult] = None
+    scan_origin: Optional[Pose2D] = None
+
+    def scan_hits(self):
+        """(N, 2) world points where the scan's beams hit something (finite ranges only)."""
+        if self.scan is None:
+            return np.zeros((0, 2))
+        ranges = self.scan.ranges.astype(float)
+        angles = beam_angles() + self.scan_origin.yaw
+        finite = np.isfinite(ranges)
+        return np.column_stack((self.scan_origin.x + ranges[finite] * np.cos(angles[finite]),
+                                self.scan_origin.y + ranges[finite] * np.sin(angles[finite])))
+
+
+def model_views(world):
+    """The world's models as ModelViews, poses as of now (call with the world locked)."""
+    return tuple(ModelView(m.name, m.spec.shape, m.pose, m.spec.static) for m in world.models())
+
+
+def scene_of(world, trail, scan=None):
+    """A Scene of `world` now (call with the world locked); `scan` is the latest ScanResult or None."""
+    return Scene(static_shapes=world.description.static_shapes, models=model_views(world), robot_pose=world.robot.pose,
+                 robot_outlines=waffle_footprint(), trail=trail.strokes(), scan=scan,
+                 scan_origin=world.robot.scan_pose() if scan is not None else None)

@@ -1,0 +1,1 @@
+"""Terminal input for turtle_teleop_key."""

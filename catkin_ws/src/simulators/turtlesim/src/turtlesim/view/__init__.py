@@ -1,0 +1,1 @@
+"""The window: turtle sprites over the pen canvas, and whether a display exists."""

@@ -1,0 +1,60 @@
+"""scripts/demo, the README's main command: it runs the Week 4 tour against tb3_sim, prints the table,
+writes a top-down PNG showing the trajectory, and exits 0 leaving nothing running."""
+import os
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+from PyQt5.QtGui import QImage
+
+from roslab import free_port
+
+REPO_ROOT = Path(__file__).resolve().parents[3]
+PICTURE = REPO_ROOT / "demo-output" / "week4_demo.png"
+TRAIL_PIXELS_AT_LEAST = 100
+
+
+def is_trail_blue(rgb):
+    """The renderer's trail colour (120, 180, 230), also where a translucent red laser ray crosses it."""
+    red, green, blue = rgb
+    return blue >= 170 and blue - red >= 40 and green >= 120
+
+
+@pytest.fixture(scope="module")
+def demo_run(tmp_path_factory):
+    home = tmp_path_factory.mktemp("demo")
+    env = dict(os.environ, ROS_MASTER_URI="http://localhost:{}".format(free_port()), ROS_HOSTNAME="localhost",
+               ROS_HOME=str(home), ROS_LOG_DIR=str(home / "log"))
+    env.pop("DISPLAY", None)
+    result = subprocess.run([str(REPO_ROOT / "scripts" / "demo"), "--rtf", "3"], env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True, timeout=600, start_new_session=True)
+    return result
+
+
+def test_demo_exits_0_with_the_table(demo_run):
+    assert demo_run.returncode == 0, demo_run.stdout[-3000:]
+    output = demo_run.stdout
+    assert "measured from /odom and /scan" in output
+    first_row = next(line for line in output.splitlines() if line.startswith("1  /move_service True"))
+    moved = float(re.search(r"moved ([+-][0-9.]+) m", first_row).group(1))
+    assert moved == pytest.approx(0.50, abs=0.03)
+    assert "Request failed: approach_velocity 0.5 must be in (0, 0.26]" in output
+    assert "top-down picture of the run" in output
+
+
+def test_demo_picture_shows_the_trajectory(demo_run):
+    image = QImage(str(PICTURE))
+    assert not image.isNull(), "no PNG at {}".format(PICTURE)
+    trail = sum(is_trail_blue(pixel_rgb(image, x, y)) for y in range(image.height()) for x in range(image.width()))
+    assert trail >= TRAIL_PIXELS_AT_LEAST
+
+
+def pixel_rgb(image, x, y):
+    colour = image.pixelColor(x, y)
+    return colour.red(), colour.green(), colour.blue()
+
+
+def test_demo_leaves_no_process_behind(demo_run):
+    leftover = subprocess.run(["pgrep", "-f", "week4_demo.launch"], stdout=subprocess.PIPE, text=True)
+    assert leftover.stdout.strip() == ""

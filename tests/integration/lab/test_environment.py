@@ -1,0 +1,90 @@
+"""scripts/env.sh makes a ROS terminal for this workspace whatever python3 came first on PATH, binds ROS to
+localhost unless the user chose otherwise, and scripts/setup re-runs as a no-op."""
+import os
+import subprocess
+from pathlib import Path
+
+import pytest
+
+REPO_ROOT = Path(__file__).resolve().parents[3]
+
+
+@pytest.fixture
+def foreign_python_first(tmp_path):
+    """A PATH whose first python3 is not Debian's (like pyenv's shim on these machines): it cannot import rospy."""
+    shim_dir = tmp_path / "shims"
+    shim_dir.mkdir()
+    shim = shim_dir / "python3"
+    shim.write_text("#!/bin/sh\necho 'foreign python3: no rospy here' >&2\nexit 1\n")
+    shim.chmod(0o755)
+    return "{}:/usr/local/bin:/usr/bin:/bin".format(shim_dir)
+
+
+def in_fresh_terminal(script, path, **env):
+    """Run `script` in `bash` with a minimal environment after `source scripts/env.sh`."""
+    clean = {"HOME": os.environ["HOME"], "PATH": path, **env}
+    result = subprocess.run(["bash", "-c", "source scripts/env.sh && " + script], cwd=REPO_ROOT, env=clean,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=300)
+    return result.returncode, result.stdout
+
+
+def test_venv_python_wins_and_imports_ros(foreign_python_first):
+    code, output = in_fresh_terminal(
+        "command -v python3 && python3 -c 'import rospy, tuos_msgs.srv, Box2D; print(\"imports ok\")'",
+        foreign_python_first)
+    assert code == 0, output
+    assert output.splitlines()[0] == str(REPO_ROOT / ".venv" / "bin" / "python3")
+    assert "imports ok" in output
+
+
+def test_ros_tools_are_on_path(foreign_python_first):
+    code, output = in_fresh_terminal(
+        "for tool in rosrun roslaunch rosservice rossrv rostest catkin_make roscore; do command -v $tool; done"
+        " && rospack find tuos_msgs", foreign_python_first)
+    assert code == 0, output
+    assert output.splitlines()[-1] == str(REPO_ROOT / "catkin_ws/src/interfaces/tuos_msgs")
+
+
+def test_binds_to_localhost_by_default(foreign_python_first):
+    code, output = in_fresh_terminal('echo "$ROS_HOSTNAME $ROS_MASTER_URI ${ROS_IP:-unset}"', foreign_python_first)
+    assert code == 0, output
+    assert output.strip() == "localhost http://localhost:11311 unset"
+
+
+def test_user_network_settings_are_kept(foreign_python_first):
+    code, output = in_fresh_terminal('echo "${ROS_HOSTNAME:-unset} $ROS_MASTER_URI $ROS_IP"', foreign_python_first,
+                                     ROS_MASTER_URI="http://robot.local:11311", ROS_IP="10.0.0.5")
+    assert code == 0, output
+    assert output.strip() == "unset http://robot.local:11311 10.0.0.5"
+
+
+def test_src_alias_resources_the_environment(foreign_python_first):
+    code, output = in_fresh_terminal("shopt -s expand_aliases; alias src", foreign_python_first)
+    assert code == 0, output
+    assert "scripts/env.sh" in output
+
+
+@pytest.mark.slow
+def test_catkin_make_works_despite_foreign_python(foreign_python_first, tmp_path):
+    """catkin_make into a fresh build folder, so CMake detects Python afresh instead of reading the workspace's
+    cache (and the workspace's own build is left as it was); tuos_msgs and its dependencies only, for speed."""
+    code, output = in_fresh_terminal(
+        "cd catkin_ws && catkin_make --build {0}/build -DCATKIN_DEVEL_PREFIX={0}/devel "
+        "--only-pkg-with-deps tuos_msgs".format(tmp_path), foreign_python_first)
+    assert code == 0, output[-3000:]
+    assert "PYTHON_EXECUTABLE: {}".format(REPO_ROOT / ".venv/bin/python3") in output
+    assert list((tmp_path / "devel").glob("lib/python3*/dist-packages/tuos_msgs/srv/_SetBool.py")), output[-3000:]
+
+
+def run_setup():
+    result = subprocess.run([str(REPO_ROOT / "scripts" / "setup")], stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True, timeout=1800)
+    assert result.returncode == 0, result.stdout
+    return result.stdout
+
+
+def test_second_setup_is_a_no_op_that_says_so():
+    run_setup()
+    second = run_setup()
+    assert second.count("already done") == 3, second
+    assert "catkin_make (log" not in second
