@@ -176,7 +176,7 @@ def test_move_service_fuzzed(robot):
         for request_signal in signals:
             response = fuzzer.call(request_signal, motion_s=5.0 if request_signal else 0.0).response
             assert response.response_signal is request_signal, response.response_message
-            assert ("Request complete" if signal else "request_signal to 'true'") in response.response_message
+            assert ("Request complete" if request_signal else "request_signal to 'true'") in response.response_message
 
     move()
     report(fuzzer)
