@@ -6,6 +6,8 @@ import sys
 import time
 from pathlib import Path
 
+import numpy
+
 from roslab.waiting import wait_until
 
 PROBE_NODE = Path(__file__).with_name("probe_node.py")
@@ -46,9 +48,22 @@ class TopicProbe:
             raise ProbeError(reply["error"])
         return reply
 
-    def subscribe(self, topic, msg_type, wait_s=5.0):
-        """Subscribe to `topic`; waits up to `wait_s` for a publisher connection; returns the connections."""
-        return self._ask("subscribe", topic=topic, type=msg_type, wait_s=wait_s)["connections"]
+    def subscribe(self, topic, msg_type, wait_s=5.0, image_file=None):
+        """Subscribe to `topic`; waits up to `wait_s` for a publisher connection; returns the connections.
+
+        With `image_file` (a path) the topic is an image topic: messages come back without their pixel data, and
+        the latest image, decoded by cv_bridge, is kept at that path as a .npy file (see `latest_image`).
+        """
+        args = {} if image_file is None else {"image_file": str(image_file)}
+        return self._ask("subscribe", topic=topic, type=msg_type, wait_s=wait_s, **args)["connections"]
+
+    @staticmethod
+    def latest_image(image_file):
+        """The latest image the probe decoded into `image_file` (a numpy array), or None before the first."""
+        try:
+            return numpy.load(image_file)
+        except FileNotFoundError:
+            return None
 
     def take(self, topic):
         """Messages received on `topic` since the last take: [{"wall", "ros", "msg"}, ...], oldest first."""

@@ -2,6 +2,9 @@
 line. It exists because rospy allows one init_node per process while each test module has its own master.
 
 Requests:  {"op": "subscribe", "topic": t, "type": "pkg/Msg"}            -> {"ok": true, "connections": n}
+           {"op": "subscribe", ..., "image_file": path}  for sensor_msgs/Image or CompressedImage: messages come
+               back without their `data` (its length instead), and the latest image, decoded by cv_bridge
+               (imgmsg_to_cv2 or compressed_imgmsg_to_cv2), is saved as a numpy .npy file at `path`
            {"op": "take", "topic": t}  (and clears the buffer)           -> {"ok": true, "messages": [...]}
            {"op": "publish", "topic": t, "type": "pkg/Msg", "msg": {...}, "wait_s": 5}  -> {"ok": true}
            {"op": "now"}                                                 -> {"ok": true, "now": ros seconds}
@@ -10,13 +13,16 @@ Errors come back as {"ok": false, "error": text}.
 """
 import json
 import math
+import os
 import sys
 import threading
 import time
 
 import genpy
+import numpy
 import roslib.message
 import rospy
+from cv_bridge import CvBridge
 
 
 def to_plain(value):
@@ -40,12 +46,16 @@ class Probe:
         self._buffers = {}
         self._subscribers = {}
         self._publishers = {}
+        self._image_files = {}
+        self._bridge = CvBridge()
 
-    def subscribe(self, topic, type, wait_s=5.0):
+    def subscribe(self, topic, type, wait_s=5.0, image_file=None):
         """Subscribe, then wait up to `wait_s` for a connection to a publisher, so that a message published
         right after this returns is not missed."""
         msg_class = self._message_class(type)
         with self._lock:
+            if image_file is not None:
+                self._image_files[topic] = image_file
             if topic not in self._subscribers:
                 self._buffers[topic] = []
                 self._subscribers[topic] = rospy.Subscriber(topic, msg_class, self._record, callback_args=topic,
@@ -57,9 +67,26 @@ class Probe:
         return {"connections": subscriber.get_num_connections()}
 
     def _record(self, msg, topic):
-        entry = {"wall": time.time(), "ros": rospy.get_rostime().to_sec(), "msg": to_plain(msg)}
+        image_file = self._image_files.get(topic)
+        if image_file is not None:
+            self._save_image(msg, image_file)
+            plain = to_plain(msg)
+            plain["data"] = len(msg.data)
+        else:
+            plain = to_plain(msg)
+        entry = {"wall": time.time(), "ros": rospy.get_rostime().to_sec(), "msg": plain}
         with self._lock:
             self._buffers[topic].append(entry)
+
+    def _save_image(self, msg, path):
+        """Decode `msg` as a course's node would and save the array where the test reads it (atomically)."""
+        if hasattr(msg, "format"):
+            pixels = self._bridge.compressed_imgmsg_to_cv2(msg)
+        else:
+            pixels = self._bridge.imgmsg_to_cv2(msg)
+        with open(path + ".part", "wb") as part:
+            numpy.save(part, pixels)
+        os.replace(path + ".part", path)
 
     def take(self, topic):
         with self._lock:

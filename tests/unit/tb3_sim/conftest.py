@@ -37,5 +37,5 @@ class FakeSim:
 
 @pytest.fixture
 def fake_sim():
-    """FakeSim(world): a stand-in for ros_node.SimNode around `world`."""
+    """FakeSim(world): a stand-in for tb3_sim.ros.node.SimNode around `world`."""
     return FakeSim

@@ -144,3 +144,36 @@ def test_absurd_mass_is_refused():
             "<sphere radius='1'/></geometry></collision></link></robot>")
     with pytest.raises(ModelXmlError, match=r"= 1e-300 kg is outside \[1e-06, 1e\+06\] kg"):
         parse_model_xml(text)
+
+
+def sdf_box(material):
+    return (f'<sdf version="1.6"><model name="b"><link name="l"><collision name="c"><geometry><box><size>0.3 0.3 0.3'
+            f'</size></box></geometry></collision><visual name="v"><geometry><box><size>0.3 0.3 0.3</size></box>'
+            f'</geometry><material>{material}</material></visual></link></model></sdf>')
+
+
+def urdf_box(extra="", visual_material=""):
+    return (f'<robot name="b">{extra}<link name="l"><visual><geometry><box size="0.3 0.3 0.3"/></geometry>'
+            f'{visual_material}</visual><collision><geometry><box size="0.3 0.3 0.3"/></geometry></collision>'
+            f'</link></robot>')
+
+
+@pytest.mark.parametrize("text, rgb", [
+    (sdf_box("<script><name>Gazebo/Red</name></script>"), (255, 0, 0)),
+    (sdf_box("<ambient>0 0 1 1</ambient><diffuse>0 1 0 1</diffuse>"), (0, 255, 0)),
+    (sdf_box("<ambient>0 0 1 1</ambient>"), (0, 0, 255)),
+    (sdf_box("<script><name>Gazebo/NoSuchMaterial</name></script>"), None),
+    (urdf_box(visual_material='<material name="m"><color rgba="1 1 0 1"/></material>'), (255, 255, 0)),
+    (urdf_box(extra='<material name="blue"><color rgba="0 0 1 1"/></material>',
+              visual_material='<material name="blue"/>'), (0, 0, 255)),
+    (urdf_box(extra='<gazebo reference="l"><material>Gazebo/Red</material></gazebo>',
+              visual_material='<material name="m"><color rgba="0 0 1 1"/></material>'), (255, 0, 0)),
+    (urdf_box(), None),
+])
+def test_model_colours_as_gazebo_reads_them(text, rgb):
+    assert parse_model_xml(text).rgb == rgb
+
+
+def test_malformed_colour_numbers_are_an_error():
+    with pytest.raises(ModelXmlError, match="<material><diffuse>"):
+        parse_model_xml(sdf_box("<diffuse>red</diffuse>"))

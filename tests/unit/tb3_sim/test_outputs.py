@@ -13,7 +13,11 @@ from tb3_sim.ros.outputs.clock import ClockOutput
 from tb3_sim.ros.outputs.scan import ScanOutput
 
 TOPIC_KEYS = {"/clock": "clock", "odom": "odom", "/tf": "tf", "joint_states": "joint_states", "scan": "scan",
-              "imu": "imu", "~model_states": "model_states", "~world_markers": "world_markers"}
+              "imu": "imu", "~model_states": "model_states", "~world_markers": "world_markers",
+              "/camera/rgb/image_raw": "rgb", "/camera/rgb/camera_info": "rgb_info",
+              "/camera/rgb/image_raw/compressed": "compressed", "/camera/depth/image_raw": "depth",
+              "/camera/depth/camera_info": "depth_info"}
+SMALL_CAMERA = {"camera_width": 64, "camera_height": 48}
 
 
 class FakePublisher:
@@ -27,6 +31,8 @@ class FakePublisher:
 
 
 def outputs(subscribed=True, **config):
+    """Every registered output with fake publishers (a 64x48 camera unless `config` says otherwise)."""
+    config = {**SMALL_CAMERA, **config}
     return OutputPublisher(registered_outputs(SimConfig(world_path=None, **config)),
                            lambda topic: FakePublisher(topic, int(subscribed)))
 
@@ -49,8 +55,9 @@ def run(world, publisher, seconds):
 
 def test_rates_over_two_sim_seconds(world):
     counts, _ = run(world, outputs(), 2.0)
+    camera = {key: 60 for key in ("rgb", "rgb_info", "compressed", "depth", "depth_info")}
     assert counts == {"clock": 400, "odom": 60, "tf": 60, "joint_states": 60, "scan": 10, "imu": 200,
-                      "model_states": 200, "world_markers": 4}
+                      "model_states": 200, "world_markers": 4, **camera}
 
 
 def test_nothing_is_built_without_subscribers_and_lazy_outputs_are_not_read(world):
@@ -61,10 +68,11 @@ def test_nothing_is_built_without_subscribers_and_lazy_outputs_are_not_read(worl
 
 
 def test_registry_order_clock_first_and_every_output_declares_topics_and_rate():
-    registered = registered_outputs(SimConfig(world_path=None))
+    registered = registered_outputs(SimConfig(world_path=None, **SMALL_CAMERA))
     assert isinstance(registered[0], ClockOutput)
     assert [type(o).__name__ for o in registered] == [
-        "ClockOutput", "OdometryOutput", "ScanOutput", "ImuOutput", "ModelStatesOutput", "WorldMarkersOutput"]
+        "ClockOutput", "OdometryOutput", "ScanOutput", "ImuOutput", "ModelStatesOutput", "WorldMarkersOutput",
+        "CameraOutput"]
     for output in registered:
         assert isinstance(output, Output) and output.topics and output.rate_hz >= 0
 

@@ -19,6 +19,8 @@ INVALID = Path(__file__).parent / "fixtures" / "invalid_worlds"
     ("negative_radius.yaml", "static[0].radius"),
     ("unknown_model_key.yaml", "models[0].colour"),
     ("unknown_model_type.yaml", "models[0].type"),
+    ("unknown_color_name.yaml", "models[0].color"),
+    ("color_out_of_range.yaml", "static[0].color"),
     ("concave_polygon.yaml", "static[0].points"),
     ("duplicate_model_name.yaml", "models[1].name"),
     ("static_not_bool.yaml", "models[0].static"),
@@ -87,3 +89,21 @@ def test_approach_arena_has_a_box_ahead_of_the_origin():
     target = next(m for m in world.models if m.name == "target_box")
     assert target.pose.x == pytest.approx(1.5) and target.pose.y == 0.0
     assert any(isinstance(m.shape, Cylinder) and m.static for m in world.models)
+
+
+def test_colors_by_name_hex_gazebo_material_and_channels():
+    world = parse_world({"name": "w", "static": [
+        {"type": "circle", "center": [0, 0], "radius": 0.1, "color": "#ff8000"},
+        {"type": "circle", "center": [1, 0], "radius": 0.1, "color": [0.0, 0.5, 1.0]},
+        {"type": "circle", "center": [2, 0], "radius": 0.1}],
+        "models": [{"name": "b", "type": "box", "size": [0.3, 0.3, 0.3], "color": "Gazebo/Red"},
+                   {"name": "c", "type": "cylinder", "radius": 0.1, "height": 0.2, "color": "yellow"}]})
+    assert [s.rgb for s in world.static_shapes] == [(255, 128, 0), (0, 128, 255), None]
+    assert [m.rgb for m in world.models] == [(255, 0, 0), (255, 255, 0)]
+
+
+def test_the_shipped_camera_worlds_load():
+    fruit = load_world(shipped_world_path("fruit_world"))
+    assert {m.name: m.rgb for m in fruit.models} == {"apple": (255, 0, 0), "banana": (255, 255, 0)}
+    pillars = load_world(shipped_world_path("colour_search")).models
+    assert len({m.rgb for m in pillars}) == 6

@@ -9,6 +9,13 @@ Supported, which is what course code and the Gazebo box tool send:
   <gazebo><static>true</static></gazebo> makes the model static.
 A model must have exactly one collision shape. Units: metres, radians, kilograms.
 
+Colour (what the camera sees), from the first that is given: SDF <visual><material> with <diffuse>, else
+<ambient> (r g b [a], each in [0, 1]), else <script><name>Gazebo/Red</name>; URDF <gazebo><material>Gazebo/Red
+</material></gazebo> (for the whole robot or the link's reference), else <visual><material> with <color rgba>
+or the name of a top-level <material> that has one. A Gazebo material this table does not know renders in
+Gazebo's default grey, as Gazebo falls back when a material script is missing; malformed colour numbers are an
+error.
+
 2D simplifications, kept on purpose: z is ignored (objects rest on the floor; a box's height is its z size, a
 cylinder's its length, a sphere's its diameter); roll and pitch must be zero; the link and collision offsets are
 folded into the model pose, so the model origin reported by get_model_state is the collision shape's centre;
@@ -22,6 +29,7 @@ from dataclasses import replace
 
 from tb3_sim.core.errors import ModelXmlError, NotModelXmlError, NotUrdfError
 from tb3_sim.core.geometry import Pose2D, wrap_angle
+from tb3_sim.core.materials import material_rgb, rgba_text_to_rgb
 from tb3_sim.core.shapes import Box, Cylinder
 from tb3_sim.core.world_file import DEFAULT_MODEL_MASS_KG, ModelSpec
 
@@ -73,9 +81,10 @@ def _parse_sdf(root):
     for link in model.findall("link"):
         link_pose = compose(model_pose, _sdf_pose(link))
         mass = _mass(_text(link, "inertial/mass", None), "<link><inertial><mass>")
+        rgb = _sdf_colour(link)
         for collision in link.findall("collision"):
             shape = _sdf_geometry(collision.find("geometry"))
-            found.append((shape, compose(link_pose, _sdf_pose(collision)), mass))
+            found.append((shape, compose(link_pose, _sdf_pose(collision)), mass, rgb))
     return _single_shape(model.get("name", ""), found, static)
 
 
@@ -84,9 +93,10 @@ def _parse_urdf(root):
     for link in root.findall("link"):
         mass_element = link.find("inertial/mass")
         mass = _mass(None if mass_element is None else mass_element.get("value"), "<inertial><mass value>")
+        rgb = _urdf_colour(root, link)
         for collision in link.findall("collision"):
             shape = _urdf_geometry(collision.find("geometry"))
-            found.append((shape, _urdf_origin(collision.find("origin")), mass))
+            found.append((shape, _urdf_origin(collision.find("origin")), mass, rgb))
     static = any((element.text or "").strip().lower() in TRUE_WORDS for element in root.findall("gazebo/static"))
     return _single_shape(root.get("name", ""), found, static)
 
@@ -95,8 +105,49 @@ def _single_shape(name, found, static):
     if len(found) != 1:
         what = "no <collision>" if not found else f"{len(found)} <collision> elements"
         raise ModelXmlError(f"model '{name}' has {what}; tb3_sim needs exactly one box, cylinder or sphere")
-    shape, pose, mass = found[0]
-    return ModelSpec(name, shape, pose, static, mass)
+    shape, pose, mass, rgb = found[0]
+    return ModelSpec(name, shape, pose, static, mass, rgb)
+
+
+def _gazebo_material(name):
+    """The colour of a Gazebo material script name, or None (default grey) if the table does not know it."""
+    try:
+        return material_rgb(name)
+    except ValueError:
+        return None
+
+
+def _rgba(text, what):
+    try:
+        return rgba_text_to_rgb(text)
+    except ValueError as error:
+        raise ModelXmlError(f"{what}: {error}") from None
+
+
+def _sdf_colour(link):
+    for material in link.findall("visual/material"):
+        for channel in ("diffuse", "ambient"):
+            text = _text(material, channel, None)
+            if text is not None:
+                return _rgba(text, f"<material><{channel}>")
+        script = _text(material, "script/name", None)
+        if script is not None:
+            return _gazebo_material(script)
+    return None
+
+
+def _urdf_colour(root, link):
+    for gazebo in root.findall("gazebo"):
+        if gazebo.get("reference") in (None, link.get("name")) and _text(gazebo, "material", None):
+            return _gazebo_material(_text(gazebo, "material", None))
+    named = {m.get("name"): m for m in root.findall("material")}
+    for material in link.findall("visual/material"):
+        color = material.find("color")
+        if color is None:
+            color = named.get(material.get("name"), material).find("color")
+        if color is not None:
+            return _rgba(color.get("rgba"), "<material><color rgba>")
+    return None
 
 
 def with_name(spec, name):

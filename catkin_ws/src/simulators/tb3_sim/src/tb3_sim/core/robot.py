@@ -19,7 +19,7 @@ class Robot:
     """The robot: a dynamic, bullet (continuous-collision) body whose velocity the drive sets each step.
 
     The body's origin is base_footprint; its collision shapes are the Waffle's base box and wheels
-    (`robot_model.waffle_footprint`) with a total mass of WAFFLE_MASS_KG. Because the velocity is overwritten
+    (`waffle.waffle_footprint`) with a total mass of WAFFLE_MASS_KG. Because the velocity is overwritten
     before every physics step, the contact solver is what stops the robot at walls and what lets it push
     dynamic models, as in flatland's diff drive.
     """

@@ -2,14 +2,16 @@
 
 All coordinates are metres. Static shapes are given in the world frame; model shapes (`Box`, `Cylinder`)
 are centred on their model's origin and placed by the model's pose. `height` is the top of the object above
-the floor: the LiDAR scans only the plane z = 0.132 m (spec §2), so an object lower than that collides but is
-not seen (see `visible_at`).
+the floor: the LiDAR scans only the plane z = 0.132 m, so an object lower than that collides but is not seen by
+it (see `visible_at`). `rgb` is what the camera sees: an (r, g, b) tuple of 0-255 ints, or None for the default
+(materials.DEFAULT_WALL_RGB); a model's colour is on its ModelSpec.
 """
 
 from dataclasses import dataclass
-from typing import Tuple
+from typing import Optional, Tuple
 
 Point = Tuple[float, float]
+Rgb = Tuple[int, int, int]
 
 # Outer wall of turtlebot3_world is about 1 m tall; used when a world file gives no height.
 DEFAULT_STATIC_HEIGHT_M = 1.0
@@ -22,6 +24,7 @@ class Segment:
     start: Point
     end: Point
     height: float = DEFAULT_STATIC_HEIGHT_M
+    rgb: Optional[Rgb] = None
 
 
 @dataclass(frozen=True)
@@ -30,6 +33,7 @@ class Polygon:
 
     points: Tuple[Point, ...]
     height: float = DEFAULT_STATIC_HEIGHT_M
+    rgb: Optional[Rgb] = None
 
 
 @dataclass(frozen=True)
@@ -39,6 +43,7 @@ class Circle:
     center: Point
     radius: float
     height: float = DEFAULT_STATIC_HEIGHT_M
+    rgb: Optional[Rgb] = None
 
 
 @dataclass(frozen=True)

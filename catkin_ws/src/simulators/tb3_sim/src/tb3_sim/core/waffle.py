@@ -26,6 +26,14 @@ WAFFLE_MASS_KG = 1.55
 WAFFLE_SCAN_OFFSET_X_M = -0.064
 WAFFLE_SCAN_HEIGHT_M = 0.132
 
+# The RealSense R200's camera_rgb_frame (where Gazebo's depth camera sensor sits, so the RGB and depth images
+# share one viewpoint) in base_footprint: base_link 0.010 up + camera_link (0.064, -0.065, 0.094) + (0.005,
+# 0.018, 0.013). The optical frame turns the same origin to z ahead, x right, y down (REP 103).
+WAFFLE_CAMERA_X_M = 0.069
+WAFFLE_CAMERA_Y_M = -0.047
+WAFFLE_CAMERA_HEIGHT_M = 0.117
+WAFFLE_CAMERA_OPTICAL_FRAME = "camera_rgb_optical_frame"
+
 WHEEL_JOINT_NAMES = ("wheel_left_joint", "wheel_right_joint")
 
 # Vendor limits, used only by an optional clamp and by tests; the Gazebo plugin does not clamp.
@@ -39,6 +47,10 @@ WAFFLE_STATIC_TRANSFORMS = (
     ("base_link", "base_scan", (-0.064, 0.0, 0.122), (0.0, 0.0, 0.0)),
     ("base_link", "imu_link", (0.0, 0.0, 0.068), (0.0, 0.0, 0.0)),
     ("base_link", "camera_link", (0.064, -0.065, 0.094), (0.0, 0.0, 0.0)),
+    ("camera_link", "camera_rgb_frame", (0.005, 0.018, 0.013), (0.0, 0.0, 0.0)),
+    ("camera_rgb_frame", "camera_rgb_optical_frame", (0.0, 0.0, 0.0), (-1.57, 0.0, -1.57)),
+    ("camera_link", "camera_depth_frame", (0.005, 0.028, 0.013), (0.0, 0.0, 0.0)),
+    ("camera_depth_frame", "camera_depth_optical_frame", (0.0, 0.0, 0.0), (-1.57, 0.0, -1.57)),
     ("base_link", "caster_back_left_link", (-0.177, 0.064, -0.004), (-1.57, 0.0, 0.0)),
     ("base_link", "caster_back_right_link", (-0.177, -0.064, -0.004), (-1.57, 0.0, 0.0)),
 )

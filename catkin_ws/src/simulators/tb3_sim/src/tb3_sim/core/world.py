@@ -102,7 +102,7 @@ class World:
         obstacles = self._static_obstacles[reaching_m]
         for model in self._models.values():
             if visible_at(model.spec.shape, reaching_m):
-                obstacles = obstacles + model_obstacles(model.spec.shape, model.pose)
+                obstacles = obstacles + model_obstacles(model.spec.shape, model.pose, model.spec.rgb)
         return obstacles
 
     def model_names(self):

@@ -9,7 +9,7 @@ Format (every key is checked; unknown keys and bad values raise `WorldFileError`
       - {type: segment, start: [x, y], end: [x, y]}          # zero-thickness wall
       - {type: polygon, points: [[x, y], [x, y], [x, y]]}    # solid, convex, 3-8 vertices
       - {type: circle, center: [x, y], radius: r}            # solid disc (a pillar)
-      # each static item also takes an optional `height` (m above the floor, default 1.0)
+      # each static item also takes an optional `height` (m above the floor, default 1.0) and `color`
     models:                    # optional list of named models (movable with set_model_state)
       - name: box1             # required, unique, not `ground_plane` nor the static_model name
         type: box              # box | cylinder
@@ -19,6 +19,11 @@ Format (every key is checked; unknown keys and bad values raise `WorldFileError`
         pose: [x, y, yaw]      # optional, default [0, 0, 0]: m, m, rad in the world frame
         static: false          # optional, default false: a static model is never pushed
         mass: 1.0              # optional, kg, default 1.0 (dynamic models only)
+        color: red             # optional: what the camera sees (default: Gazebo's untextured grey)
+
+`color` is a colour name (red, green, blue, yellow, orange, purple, white, black, grey, ...), a hex string
+("#ff8800"), a Gazebo material name ("Gazebo/Red"), or [r, g, b] with each in [0, 1]. Static shapes default to
+the wall grey of materials.DEFAULT_WALL_RGB, models to Gazebo's default model grey.
 
 The robot is not part of a world file: its spawn pose is given by the caller (launch args x_pos, y_pos, yaw).
 Objects whose height is below the LiDAR plane (0.132 m) collide but are not seen by the scan.
@@ -33,7 +38,8 @@ import yaml
 
 from tb3_sim.core.errors import WorldFileError
 from tb3_sim.core.geometry import Pose2D
-from tb3_sim.core.shapes import DEFAULT_STATIC_HEIGHT_M, Box, Circle, Cylinder, Polygon, Segment
+from tb3_sim.core.materials import colour_from_name_or_hex
+from tb3_sim.core.shapes import DEFAULT_STATIC_HEIGHT_M, Box, Circle, Cylinder, Polygon, Rgb, Segment
 
 GROUND_PLANE_NAME = "ground_plane"
 
@@ -47,26 +53,29 @@ SHIPPED_WORLDS_DIR = Path(__file__).resolve().parents[3] / "worlds"
 
 _TOP_KEYS = {"name": True, "static_model": False, "static": False, "models": False}
 _STATIC_KEYS = {
-    "segment": {"type": True, "start": True, "end": True, "height": False},
-    "polygon": {"type": True, "points": True, "height": False},
-    "circle": {"type": True, "center": True, "radius": True, "height": False},
+    "segment": {"type": True, "start": True, "end": True, "height": False, "color": False},
+    "polygon": {"type": True, "points": True, "height": False, "color": False},
+    "circle": {"type": True, "center": True, "radius": True, "height": False, "color": False},
 }
 _MODEL_KEYS = {
-    "box": {"name": True, "type": True, "size": True, "pose": False, "static": False, "mass": False},
+    "box": {"name": True, "type": True, "size": True, "pose": False, "static": False, "mass": False,
+            "color": False},
     "cylinder": {"name": True, "type": True, "radius": True, "height": True, "pose": False,
-                 "static": False, "mass": False},
+                 "static": False, "mass": False, "color": False},
 }
 
 
 @dataclass(frozen=True)
 class ModelSpec:
-    """A named model: its shape, its pose in the world frame, whether it is static, its mass in kg."""
+    """A named model: its shape, its pose in the world frame, whether it is static, its mass in kg, and its
+    colour for the camera ((r, g, b) 0-255, or None for Gazebo's default grey)."""
 
     name: str
     shape: Union[Box, Cylinder]
     pose: Pose2D = Pose2D()
     static: bool = False
     mass_kg: float = DEFAULT_MODEL_MASS_KG
+    rgb: Optional[Rgb] = None
 
 
 @dataclass(frozen=True)
@@ -187,12 +196,30 @@ class _Reader:
             end = self.numbers(item["end"], f"{key}.end", 2)
             if start == end:
                 self.fail(f"{key}.end", "segment has zero length")
-            return Segment(start, end, self.height(item, key))
+            return Segment(start, end, self.height(item, key), self.colour(item, key))
         if kind == "polygon":
-            return Polygon(self.polygon_points(item["points"], f"{key}.points"), self.height(item, key))
+            return Polygon(self.polygon_points(item["points"], f"{key}.points"), self.height(item, key),
+                           self.colour(item, key))
         center = self.numbers(item["center"], f"{key}.center", 2)
         radius = self.number(item["radius"], f"{key}.radius", positive=True)
-        return Circle(center, radius, self.height(item, key))
+        return Circle(center, radius, self.height(item, key), self.colour(item, key))
+
+    def colour(self, item, key):
+        """The optional `color` of `item` as (r, g, b) 0-255, or None."""
+        if "color" not in item:
+            return None
+        value, where = item["color"], f"{key}.color"
+        if isinstance(value, list):
+            channels = self.numbers(value, where, 3)
+            if not all(0.0 <= c <= 1.0 for c in channels):
+                self.fail(where, f"expected [r, g, b] with each in [0, 1], got {value!r}")
+            return tuple(round(255 * c) for c in channels)
+        if not isinstance(value, str):
+            self.fail(where, f"expected a colour name, '#rrggbb', a Gazebo material or [r, g, b], got {value!r}")
+        try:
+            return colour_from_name_or_hex(value)
+        except ValueError as error:
+            self.fail(where, str(error))
 
     def polygon_points(self, value, key):
         if not isinstance(value, list) or not 3 <= len(value) <= MAX_POLYGON_VERTICES:
@@ -216,7 +243,7 @@ class _Reader:
         if not isinstance(static, bool):
             self.fail(f"{key}.static", f"expected true or false, got {static!r}")
         mass = self.number(item.get("mass", DEFAULT_MODEL_MASS_KG), f"{key}.mass", positive=True)
-        return ModelSpec(name, shape, pose, static, mass)
+        return ModelSpec(name, shape, pose, static, mass, self.colour(item, key))
 
 
 def _is_strictly_convex(points):

@@ -1,6 +1,6 @@
 """The simulator node's parameters as one validated, typed object (no ROS imports: the node passes a dict).
 
-Private parameters (all optional; see `ros_node` for what each one does):
+Private parameters (all optional; see `tb3_sim.ros.node` for what each one does):
 
     ~world                   "empty"    a shipped world name (empty, turtlebot3_world, approach_arena) or a path
                                         to a world YAML file
@@ -14,6 +14,9 @@ Private parameters (all optional; see `ros_node` for what each one does):
     ~headless                false      true: never open a window; false: a window when $DISPLAY is set
     ~snapshot_path           "/tmp/tb3_sim.png"  where the ~snapshot service writes its PNG
     ~publish_static_tf       true       publish the Waffle's fixed joints on /tf_static
+    ~camera_width            1920       camera image width in pixels (the R200 in Gazebo's Waffle), 16..4096
+    ~camera_height           1080       camera image height in pixels, 16..4096
+    ~camera_rate             30.0       camera frames per second of sim time, (0, 1000]
 """
 
 import math
@@ -26,6 +29,12 @@ from tb3_sim.core.waffle import WAFFLE_MODEL_NAME
 DEFAULT_WORLD = "empty"
 DEFAULT_SNAPSHOT_PATH = "/tmp/tb3_sim.png"
 WORLD_FILE_SUFFIX = ".yaml"
+# The Gazebo Waffle's realsense_R200 sensor: 1920x1080 at 30 Hz. Smaller images make lighter runs.
+DEFAULT_CAMERA_WIDTH_PX = 1920
+DEFAULT_CAMERA_HEIGHT_PX = 1080
+DEFAULT_CAMERA_RATE_HZ = 30.0
+CAMERA_SIZE_RANGE_PX = (16, 4096)
+MAX_CAMERA_RATE_HZ = 1000.0
 
 
 @dataclass(frozen=True)
@@ -45,6 +54,9 @@ class SimConfig:
     headless: bool = False
     snapshot_path: str = DEFAULT_SNAPSHOT_PATH
     publish_static_tf: bool = True
+    camera_width: int = DEFAULT_CAMERA_WIDTH_PX
+    camera_height: int = DEFAULT_CAMERA_HEIGHT_PX
+    camera_rate: float = DEFAULT_CAMERA_RATE_HZ
 
 
 def resolve_world(value, worlds_dir):
@@ -84,6 +96,10 @@ def config_from_params(params, worlds_dir):
         headless=reader.flag("headless", False),
         snapshot_path=reader.text("snapshot_path", DEFAULT_SNAPSHOT_PATH),
         publish_static_tf=reader.flag("publish_static_tf", True),
+        camera_width=reader.integer("camera_width", DEFAULT_CAMERA_WIDTH_PX, CAMERA_SIZE_RANGE_PX),
+        camera_height=reader.integer("camera_height", DEFAULT_CAMERA_HEIGHT_PX, CAMERA_SIZE_RANGE_PX),
+        camera_rate=reader.number("camera_rate", DEFAULT_CAMERA_RATE_HZ, minimum=0.0, maximum=MAX_CAMERA_RATE_HZ,
+                                  exclusive_minimum=True),
     )
 
 
@@ -91,18 +107,22 @@ class _ParamReader:
     def __init__(self, params):
         self._params = params
 
-    def number(self, key, default, minimum=None):
+    def number(self, key, default, minimum=None, maximum=None, exclusive_minimum=False):
         value = self._params.get(key, default)
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
             raise ConfigError(f"~{key} must be a finite number, got {value!r}")
-        if minimum is not None and value < minimum:
-            raise ConfigError(f"~{key} must be >= {minimum}, got {value!r}")
+        if minimum is not None and (value <= minimum if exclusive_minimum else value < minimum):
+            raise ConfigError(f"~{key} must be {'>' if exclusive_minimum else '>='} {minimum}, got {value!r}")
+        if maximum is not None and value > maximum:
+            raise ConfigError(f"~{key} must be <= {maximum}, got {value!r}")
         return float(value)
 
-    def integer(self, key, default):
+    def integer(self, key, default, bounds=None):
         value = self._params.get(key, default)
         if isinstance(value, bool) or not isinstance(value, int):
             raise ConfigError(f"~{key} must be an integer, got {value!r}")
+        if bounds is not None and not bounds[0] <= value <= bounds[1]:
+            raise ConfigError(f"~{key} must be in [{bounds[0]}, {bounds[1]}], got {value!r}")
         return value
 
     def flag(self, key, default):

@@ -98,7 +98,7 @@ def failure_message(service, error):
 
 
 class GazeboApi:
-    """Service handlers over `sim` (a ros_node.SimNode: locked_world(), pause(), reset_world(), ...).
+    """Service handlers over `sim` (a tb3_sim.ros.node.SimNode: locked_world(), pause(), reset_world(), ...).
 
     Each handler takes a request and returns a response; `advertise()` registers them under the node's
     private namespace (/gazebo/...).

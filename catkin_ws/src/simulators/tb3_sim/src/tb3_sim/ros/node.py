@@ -9,14 +9,17 @@ Publishes: /clock every physics step (5 ms of sim time); `odom` (nav_msgs/Odomet
   and `joint_states` at 30 Hz; `scan` (sensor_msgs/LaserScan) at 5 Hz; `imu` (sensor_msgs/Imu) at 100 Hz;
   /gazebo/model_states at 100 Hz (the last three only while subscribed); /tf_static (latched) with the Waffle's
   fixed joints unless ~publish_static_tf is false; ~world_markers (visualization_msgs/MarkerArray, latched, and
-  again at 2 Hz while subscribed: walls, models, the robot's body, for rviz/tb3_sim.rviz). All rates are in
+  again at 2 Hz while subscribed: walls, models, the robot's body, for rviz/tb3_sim.rviz); the RealSense camera's
+  /camera/rgb/image_raw, /camera/rgb/image_raw/compressed, /camera/rgb/camera_info, /camera/depth/image_raw and
+  /camera/depth/camera_info at ~camera_rate (30 Hz, only while subscribed; see outputs.camera). All rates are in
   simulated time; each periodic output is one object registered in tb3_sim.ros.outputs.registry.
 Services: /gazebo/{reset_world, reset_simulation, pause_physics, unpause_physics, spawn_sdf_model,
   spawn_urdf_model, delete_model, get_model_state, set_model_state, get_world_properties} (see gazebo_api),
   and ~snapshot (std_srvs/Empty): write a top-down PNG of the world (walls, models, robot, its trail, the
   latest laser rays; see renderer) to ~snapshot_path; an unwritable path fails the call with the reason.
 Parameters: see tb3_sim.ros.config (~world, ~x_pos, ~y_pos, ~yaw, ~robot_name, ~seed, ~real_time_factor,
-  ~lidar_sees_low_objects, ~clamp_command, ~paused, ~headless, ~snapshot_path, ~publish_static_tf).
+  ~lidar_sees_low_objects, ~clamp_command, ~paused, ~headless, ~snapshot_path, ~publish_static_tf,
+  ~camera_width, ~camera_height, ~camera_rate).
 /use_sim_time is set to true before the node starts if it is absent, as gazebo_ros does. If roscore is
 restarted, the node registers everything again with the new master and sets /use_sim_time there too
 (master_reconnect).
@@ -24,6 +27,18 @@ View: when $DISPLAY (or $WAYLAND_DISPLAY) is set and ~headless is false, a top-d
 the world and offers the Gazebo box tool; physics then runs in a second thread while Qt owns the main thread.
 Closing the window leaves the simulation running headless, as closing gzclient leaves gzserver; Ctrl-C stops
 both. Without a display the node is headless with identical ROS behaviour.
+
+Differences from Gazebo, on purpose:
+- Physics is 2D (Box2D) with 5 ms steps: objects stand on the floor, z, roll and pitch are always 0, spawned
+  models are single boxes, cylinders or spheres; /clock advances 5 ms per step instead of 1 ms.
+- /imu and /gazebo/model_states go out at 100 Hz instead of on every 1 ms world update.
+- /tf_static carries the Waffle's fixed joints (robot_state_publisher's job in Gazebo launches) unless
+  ~publish_static_tf is false; the IMU message is in base_footprint, as Gazebo's URDF conversion leaves it.
+- The camera renders the 2D world in 2.5D (upright solids of each object's height and colour, flat floor and
+  sky, no textures, lights or shadows); /camera/depth/points is not published; camera_info is published to a
+  camera_info subscriber even when no image is taken.
+- set_model_state composes the pose with its reference frame (Gazebo has a known bug there); spawn and delete
+  take effect within the call instead of after up to 10 s or 60 s.
 
 Threads: the main thread (with a window: a "physics" thread) steps physics and publishes; rospy runs every
 callback in its own thread. One lock guards the world: callbacks change it only between two steps. Publishers

@@ -3,7 +3,7 @@ and parameters, and runs the 16 ms update timer with or without a window.
 
 Graph (names relative to the node's namespace unless marked ~private), as the original:
 * services clear, reset (std_srvs/Empty), spawn (turtlesim/Spawn), kill (turtlesim/Kill);
-* per turtle (see ros_turtle.py): <name>/cmd_vel, <name>/pose, <name>/color_sensor,
+* per turtle (see ros/turtle.py): <name>/cmd_vel, <name>/pose, <name>/color_sensor,
   <name>/set_pen, <name>/teleport_absolute, <name>/teleport_relative;
 * ~background_r, ~background_g, ~background_b (int, 69/86/255): written at start only when
   absent, read at start, clear and reset.

@@ -1,4 +1,5 @@
-"""The simulator's periodic outputs (clock, odometry, scan, IMU, model states, world markers) behind one seam."""
+"""The simulator's periodic outputs (clock, odometry, scan, IMU, model states, world markers,
+camera) behind one seam."""
 
 from tb3_sim.ros.outputs.output import Output, Topic
 from tb3_sim.ros.outputs.publisher import OutputPublisher

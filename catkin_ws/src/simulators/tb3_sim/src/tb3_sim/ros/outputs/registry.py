@@ -4,6 +4,7 @@
 """
 
 from tb3_sim.core.lidar import Lidar
+from tb3_sim.ros.outputs.camera import CameraOutput
 from tb3_sim.ros.outputs.clock import ClockOutput
 from tb3_sim.ros.outputs.imu import ImuOutput
 from tb3_sim.ros.outputs.model_states import ModelStatesOutput
@@ -21,4 +22,5 @@ def registered_outputs(config):
         ImuOutput(),
         ModelStatesOutput(),
         WorldMarkersOutput(),
+        CameraOutput(config.camera_width, config.camera_height, config.camera_rate),
     ]

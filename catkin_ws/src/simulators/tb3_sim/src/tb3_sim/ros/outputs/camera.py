@@ -1,0 +1,134 @@
+"""The Waffle's RealSense R200 as Gazebo's openni_kinect plugin publishes it (turtlebot3_waffle.gazebo.xacro):
+
+- /camera/rgb/image_raw (sensor_msgs/Image, rgb8) and /camera/rgb/camera_info;
+- /camera/rgb/image_raw/compressed (sensor_msgs/CompressedImage): JPEG at quality 80 with the format string
+  compressed_image_transport writes for an rgb8 image ("rgb8; jpeg compressed bgr8"); Debian has no Python
+  image_transport plugins, so the simulator publishes this topic itself;
+- /camera/depth/image_raw (sensor_msgs/Image, 32FC1, metres along the optical axis; NaN where nothing is hit and
+  outside the plugin's 0.4..5.0 m band, as Gazebo's Waffle publishes it) and /camera/depth/camera_info.
+All in frame camera_rgb_optical_frame (the plugin's frameName, also for depth: one sensor, one viewpoint), at
+`rate_hz` of sim time (30 by default), 1920x1080 by default with a horizontal field of view of 1.3439 rad
+(camera_info as Gazebo computes it: see core.camera).
+Lazy: nothing is rendered while no image topic has a subscriber; a camera_info subscriber alone gets camera_info
+without a render (Gazebo publishes it only with images). Depth is rendered only while someone takes it.
+The picture is a 2.5D render of the 2D world (core.camera): walls, pillars and models as upright solids of their
+height and colour, a floor and a sky.
+"""
+
+from typing import NamedTuple, Optional
+
+import cv2
+import numpy as np
+from sensor_msgs.msg import CameraInfo, CompressedImage, Image
+
+from tb3_sim.core.camera import (
+    DISTORTION_MODEL,
+    IDENTITY_RECTIFICATION,
+    R200_DEPTH_CUTOFF_MAX_M,
+    R200_DEPTH_CUTOFF_MIN_M,
+    R200_HACK_BASELINE_M,
+    R200_HFOV_RAD,
+    ZERO_DISTORTION,
+    CameraIntrinsics,
+    CameraRenderer,
+    CameraScene,
+)
+from tb3_sim.core.materials import FLOOR_RGB, SKY_RGB
+from tb3_sim.core.waffle import (
+    WAFFLE_CAMERA_HEIGHT_M,
+    WAFFLE_CAMERA_OPTICAL_FRAME,
+    WAFFLE_CAMERA_X_M,
+    WAFFLE_CAMERA_Y_M,
+)
+from tb3_sim.ros import messages
+from tb3_sim.ros.outputs.output import Output, Topic
+
+# compressed_image_transport's default quality and the format string it writes for an rgb8 image.
+JPEG_QUALITY = 80
+JPEG_FORMAT = "rgb8; jpeg compressed bgr8"
+
+RGB_TOPIC = "/camera/rgb/image_raw"
+RGB_INFO_TOPIC = "/camera/rgb/camera_info"
+COMPRESSED_TOPIC = "/camera/rgb/image_raw/compressed"
+DEPTH_TOPIC = "/camera/depth/image_raw"
+DEPTH_INFO_TOPIC = "/camera/depth/camera_info"
+IMAGE_TOPICS = {RGB_TOPIC, COMPRESSED_TOPIC, DEPTH_TOPIC}
+
+
+class CameraReading(NamedTuple):
+    """One frame at `time_s`: `rgb` (H, W, 3) uint8 or None, `depth` (H, W) float32 metres or None."""
+
+    time_s: float
+    rgb: Optional[np.ndarray]
+    depth: Optional[np.ndarray]
+
+
+class CameraOutput(Output):
+    lazy = True
+    frame_ids = (WAFFLE_CAMERA_OPTICAL_FRAME,)
+
+    def __init__(self, width_px, height_px, rate_hz):
+        self.rate_hz = rate_hz
+        super().__init__()
+        self.intrinsics = CameraIntrinsics(width_px, height_px, R200_HFOV_RAD, R200_HACK_BASELINE_M)
+        self.renderer = CameraRenderer(self.intrinsics, WAFFLE_CAMERA_HEIGHT_M, FLOOR_RGB, SKY_RGB,
+                                       depth_min_m=R200_DEPTH_CUTOFF_MIN_M, depth_max_m=R200_DEPTH_CUTOFF_MAX_M)
+        self.topics = (
+            Topic(RGB_TOPIC, Image, self._rgb_image),
+            Topic(RGB_INFO_TOPIC, CameraInfo, self._camera_info),
+            Topic(COMPRESSED_TOPIC, CompressedImage, self._compressed_image),
+            Topic(DEPTH_TOPIC, Image, self._depth_image),
+            Topic(DEPTH_INFO_TOPIC, CameraInfo, self._camera_info),
+        )
+
+    def read(self, world, now_s, wanted):
+        rgb = depth = None
+        if wanted & IMAGE_TOPICS:
+            pose = world.robot.pose
+            x, y = pose.compose(WAFFLE_CAMERA_X_M, WAFFLE_CAMERA_Y_M)
+            rgb, depth = self.renderer.render(x, y, pose.yaw, camera_scene(world.obstacles()),
+                                              depth=DEPTH_TOPIC in wanted)
+        return CameraReading(now_s, rgb, depth)
+
+    def _header(self, message, time_s):
+        message.header.stamp = messages.stamp(time_s)
+        message.header.frame_id = WAFFLE_CAMERA_OPTICAL_FRAME
+        return message
+
+    def _rgb_image(self, reading):
+        return self._image(reading, reading.rgb, "rgb8")
+
+    def _depth_image(self, reading):
+        return self._image(reading, reading.depth, "32FC1")
+
+    def _image(self, reading, pixels, encoding):
+        message = self._header(Image(), reading.time_s)
+        message.height, message.width = pixels.shape[:2]
+        message.encoding = encoding
+        message.is_bigendian = 0
+        message.step = pixels.strides[0]
+        message.data = pixels.tobytes()
+        return message
+
+    def _compressed_image(self, reading):
+        message = self._header(CompressedImage(), reading.time_s)
+        message.format = JPEG_FORMAT
+        bgr = cv2.cvtColor(reading.rgb, cv2.COLOR_RGB2BGR)
+        message.data = cv2.imencode(".jpg", bgr, [cv2.IMWRITE_JPEG_QUALITY, JPEG_QUALITY])[1].tobytes()
+        return message
+
+    def _camera_info(self, reading):
+        message = self._header(CameraInfo(), reading.time_s)
+        message.width, message.height = self.intrinsics.width, self.intrinsics.height
+        message.distortion_model = DISTORTION_MODEL
+        message.D = list(ZERO_DISTORTION)
+        message.K = list(self.intrinsics.k())
+        message.R = list(IDENTITY_RECTIFICATION)
+        message.P = list(self.intrinsics.p())
+        return message
+
+
+def camera_scene(obstacles):
+    """The camera's view of an obstacles.Obstacles: upright walls and cylinders with their tops and colours."""
+    return CameraScene(obstacles.lines, obstacles.line_tops, obstacles.line_rgb,
+                       obstacles.circles, obstacles.circle_tops, obstacles.circle_rgb)
