@@ -6,7 +6,10 @@ Measures, each on a private roscore with the simulator started by its launch fil
 - real-time factor at ~real_time_factor:=0 in turtlebot3_world with /scan and /odom subscribed (target >= 20x);
 - CPU of the simulator process at factor 1, same subscriptions, as % of one core (target <= 15%);
 - one 360-beam scan in turtlebot3_world, from tb3_sim.tools.benchmark (target <= 0.5 ms);
-- wall time from `roslaunch` to the first /scan message (target <= 3 s).
+- wall time from `roslaunch` to the first /scan message (target <= 3 s);
+- with `rostopic hz` taking the default 1920x1080 /camera/rgb/image_raw at 30 Hz (it subscribes with AnyMsg, so
+  it costs no decoding): the real-time factor at factor 1 (target >= 0.95) and the simulator's CPU (<= 100 %,
+  one core).
 `run()` returns the rows [(name, value, unit, target, comparison)] for scripts/bench's table
 (`scripts/bench tb3_sim_bench` runs only these).
 """
@@ -23,12 +26,14 @@ from roslab.processes import cpu_seconds  # noqa: E402
 from tb3_sim.tools.benchmark import bench_scan  # noqa: E402
 
 MEASURE_S = 10.0
+CAMERA_TOPIC = "/camera/rgb/image_raw"
 WORLD_ARGS = ("world:=turtlebot3_world", "x_pos:=-2.0", "y_pos:=-0.5", "gui:=false")
 
 
-def _with_simulator(factor, measure):
-    """Start roscore + the simulator at `factor` with a probe on /scan and /odom; return measure(master, probe).
-    The probe starts after the launch file set /use_sim_time, so `probe.now()` is sim time."""
+def _with_simulator(factor, measure, camera_subscriber=False):
+    """Start roscore + the simulator at `factor` with a probe on /scan and /odom (and, if `camera_subscriber`,
+    `rostopic hz` on the raw camera image); return measure(master, probe). The probe starts after the launch file
+    set /use_sim_time, so `probe.now()` is sim time."""
     master = RosMaster(Path(tempfile.mkdtemp(prefix="tb3_bench_")))
     try:
         master.roslaunch("tb3_sim", "tb3_sim.launch", f"real_time_factor:={factor}", *WORLD_ARGS)
@@ -37,6 +42,9 @@ def _with_simulator(factor, measure):
         probe.subscribe("/scan", "sensor_msgs/LaserScan")
         probe.subscribe("/odom", "nav_msgs/Odometry")
         probe.wait_for_message("/scan", 30)
+        if camera_subscriber:
+            hz = master.start(["rostopic", "hz", CAMERA_TOPIC], "rostopic_hz")
+            wait_until(lambda: "average rate" in hz.output(), 30, "rostopic hz to see camera images")
         return measure(master, probe)
     finally:
         master.shutdown()
@@ -61,6 +69,15 @@ def cpu_percent_at_real_time():
     return _with_simulator(1, measure)
 
 
+def _rtf_and_cpu(master, probe):
+    """(sim seconds per wall second, simulator CPU in % of one core) over MEASURE_S."""
+    pid = node_pid(master.uri, "/gazebo")
+    sim_start, cpu_start, wall_start = probe.now(), cpu_seconds(pid), time.monotonic()
+    time.sleep(MEASURE_S)
+    wall_s = time.monotonic() - wall_start
+    return (probe.now() - sim_start) / wall_s, 100.0 * (cpu_seconds(pid) - cpu_start) / wall_s
+
+
 def launch_to_first_scan_s():
     """Wall seconds from `roslaunch tb3_sim tb3_sim.launch` (master already up) to the first /scan."""
     master = RosMaster(Path(tempfile.mkdtemp(prefix="tb3_bench_")))
@@ -77,6 +94,7 @@ def launch_to_first_scan_s():
 
 def run():
     """[(name, value, unit, target, comparison)] rows; comparison is ">=" or "<=" against target."""
+    camera_rtf, camera_cpu = _with_simulator(1, _rtf_and_cpu, camera_subscriber=True)
     return [
         ("real-time factor at ~real_time_factor:=0 (/scan, /odom subscribed)", real_time_factor_unpaced(), "x",
          20.0, ">="),
@@ -84,6 +102,8 @@ def run():
          15.0, "<="),
         ("one 360-beam scan in turtlebot3_world", bench_scan() * 1e3, "ms", 0.5, "<="),
         ("roslaunch to first /scan", launch_to_first_scan_s(), "s", 3.0, "<="),
+        ("real-time factor at factor 1, 1920x1080 camera subscribed", camera_rtf, "x", 0.95, ">="),
+        ("CPU at factor 1, 1920x1080 camera subscribed", camera_cpu, "% of a core", 100.0, "<="),
     ]
 
 
