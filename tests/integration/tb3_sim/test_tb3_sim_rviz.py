@@ -1,5 +1,5 @@
 """rviz: tb3_sim publishes the world as a latched MarkerArray, and `rviz -d rviz/tb3_sim.rviz` (under a virtual
-display) loads the config and subscribes to the markers and the scan."""
+display) loads the config and subscribes to the markers, the scan and the camera image."""
 import os
 
 import pytest
@@ -29,7 +29,7 @@ def test_world_markers_are_latched_and_complete(sim):
 
 def rviz_subscribed(master_uri):
     return all(any(node.startswith("/rviz") for node in subscribers(master_uri, topic))
-               for topic in ["/gazebo/world_markers", "/scan"])
+               for topic in ["/gazebo/world_markers", "/scan", "/camera/rgb/image_raw"])
 
 
 def test_rviz_loads_the_config_and_subscribes(sim):

@@ -238,9 +238,10 @@ def has_display():
 
 
 def _publisher(topic):
-    """The rospy publisher of an output's `topic`: latched ones queue one message, the others are synchronous."""
-    if topic.latch:
-        return rospy.Publisher(topic.name, topic.message_class, queue_size=1, latch=True)
+    """The rospy publisher of an output's `topic`: latched and queued ones keep one message for a writer thread,
+    the others are synchronous."""
+    if topic.latch or topic.queued:
+        return rospy.Publisher(topic.name, topic.message_class, queue_size=1, latch=topic.latch)
     return _synchronous_publisher(topic.name, topic.message_class)
 
 

@@ -9,7 +9,8 @@
 All in frame camera_rgb_optical_frame (the plugin's frameName, also for depth: one sensor, one viewpoint), at
 `rate_hz` of sim time (30 by default), 1920x1080 by default with a horizontal field of view of 1.3439 rad
 (camera_info as Gazebo computes it: see core.camera).
-Lazy: nothing is rendered while no image topic has a subscriber; a camera_info subscriber alone gets camera_info
+Images are queued (see output.Topic): a subscriber that cannot keep up misses frames, the simulation does not
+slow down. Lazy: nothing is rendered while no image topic has a subscriber; a camera_info subscriber alone gets camera_info
 without a render (Gazebo publishes it only with images). Depth is rendered only while someone takes it.
 The picture is a 2.5D render of the 2D world (core.camera): walls, pillars and models as upright solids of their
 height and colour, a floor and a sky.
@@ -74,10 +75,10 @@ class CameraOutput(Output):
         self.renderer = CameraRenderer(self.intrinsics, WAFFLE_CAMERA_HEIGHT_M, FLOOR_RGB, SKY_RGB,
                                        depth_min_m=R200_DEPTH_CUTOFF_MIN_M, depth_max_m=R200_DEPTH_CUTOFF_MAX_M)
         self.topics = (
-            Topic(RGB_TOPIC, Image, self._rgb_image),
+            Topic(RGB_TOPIC, Image, self._rgb_image, queued=True),
             Topic(RGB_INFO_TOPIC, CameraInfo, self._camera_info),
-            Topic(COMPRESSED_TOPIC, CompressedImage, self._compressed_image),
-            Topic(DEPTH_TOPIC, Image, self._depth_image),
+            Topic(COMPRESSED_TOPIC, CompressedImage, self._compressed_image, queued=True),
+            Topic(DEPTH_TOPIC, Image, self._depth_image, queued=True),
             Topic(DEPTH_INFO_TOPIC, CameraInfo, self._camera_info),
         )
 

@@ -14,13 +14,16 @@ from tb3_sim.core.schedule import PeriodicSchedule
 
 class Topic(NamedTuple):
     """A topic an output publishes: `name` as rospy resolves it ("/clock", "odom" in the node's namespace,
-    "~model_states" under /gazebo), `message_class`, `convert(reading) -> message`, and `latch` (published once
-    at start and kept for late subscribers)."""
+    "~model_states" under /gazebo), `message_class`, `convert(reading) -> message`, `latch` (published once
+    at start and kept for late subscribers) and `queued` (big messages such as images: sent by a writer thread
+    that keeps only the newest, so a slow subscriber drops frames instead of holding up the physics loop; the
+    other topics are written synchronously by the loop, which is faster for small messages)."""
 
     name: str
     message_class: type
     convert: Callable[[Any], Any]
     latch: bool = False
+    queued: bool = False
 
 
 class Output:
