@@ -13,16 +13,17 @@ def test_defaults_make_a_dynamic_cube():
     request = spawn_request(args)
     spec = parse_model_xml(request.model_xml)
     assert (request.model_name, spec.shape, spec.static, spec.mass_kg) == ("box1", Box(0.3, 0.3, 0.3), False, 1.0)
+    assert spec.rgb is None
     assert (request.initial_pose.position.x, request.initial_pose.position.y) == (1.2, 0.0)
     assert request.reference_frame == ""
 
 
 def test_every_option():
     args = parse_args(["crate", "-1", "2.5", "--size", "0.2", "0.4", "--height", "0.1", "--yaw", "1.5707963",
-                       "--static", "--mass", "3", "--reference-frame", "box1"])
+                       "--static", "--mass", "3", "--reference-frame", "box1", "--color", "Gazebo/Red"])
     request = spawn_request(args)
     spec = parse_model_xml(request.model_xml)
-    assert spec.shape == Box(0.2, 0.4, 0.1) and spec.static
+    assert spec.shape == Box(0.2, 0.4, 0.1) and spec.static and spec.rgb == (255, 0, 0)
     assert 2 * math.atan2(request.initial_pose.orientation.z, request.initial_pose.orientation.w) == \
         pytest.approx(1.5707963)
     assert request.reference_frame == "box1"
@@ -35,6 +36,7 @@ def test_every_option():
     (["b", "0", "0", "--size", "-1"], "must be > 0: '-1'"),
     (["b", "0", "0", "--size", "1", "2", "3"], "--size takes one or two values, got 3"),
     (["b", "0"], "the following arguments are required: y"),
+    (["b", "0", "0", "--color", "reddish"], "reddish"),
 ])
 def test_bad_arguments_exit_2_with_a_reason(capsys, argv, message):
     with pytest.raises(SystemExit) as exit_info:

@@ -241,12 +241,18 @@ def _urdf_geometry(geometry):
     raise ModelXmlError(f"unsupported geometry <{shape.tag}>; use <box>, <cylinder> or <sphere>")
 
 
-def box_sdf(name, size_x, size_y, height, static=False, mass_kg=DEFAULT_MODEL_MASS_KG):
-    """SDF text of a box model like the one Gazebo's box tool inserts: one link, one collision, one visual."""
+def box_sdf(name, size_x, size_y, height, static=False, mass_kg=DEFAULT_MODEL_MASS_KG, rgb=None):
+    """SDF text of a box model like the one Gazebo's box tool inserts: one link, one collision, one visual; with
+    `rgb` ((r, g, b) 0-255) the visual gets that colour as its ambient and diffuse material."""
     size = f"{size_x:g} {size_y:g} {height:g}"
     geometry = f"<geometry><box><size>{size}</size></box></geometry>"
+    material = ""
+    if rgb is not None:
+        rgba = " ".join(f"{channel / 255:g}" for channel in rgb) + " 1"
+        material = f"<material><ambient>{rgba}</ambient><diffuse>{rgba}</diffuse></material>"
     return (f'<?xml version="1.0"?>\n<sdf version="1.6"><model name="{name}">'
             f"<static>{str(bool(static)).lower()}</static><link name=\"link\">"
             f"<inertial><mass>{mass_kg:g}</mass></inertial>"
-            f"<collision name=\"collision\">{geometry}</collision><visual name=\"visual\">{geometry}</visual>"
+            f"<collision name=\"collision\">{geometry}</collision>"
+            f"<visual name=\"visual\">{geometry}{material}</visual>"
             "</link></model></sdf>")

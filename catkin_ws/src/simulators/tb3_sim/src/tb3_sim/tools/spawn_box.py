@@ -1,10 +1,12 @@
-"""`rosrun tb3_sim spawn_box NAME X Y [--size SX [SY]] [--height H] [--yaw YAW] [--static] [--mass KG]`:
-place a box the way Gazebo's box tool does, through /gazebo/spawn_sdf_model.
+"""`rosrun tb3_sim spawn_box NAME X Y [--size SX [SY]] [--height H] [--yaw YAW] [--static] [--mass KG]
+[--color C]`: place a box the way Gazebo's box tool does, through /gazebo/spawn_sdf_model.
 
 Units: metres, radians, kilograms; X, Y, YAW in the world frame (or in --reference-frame, a model name).
-Defaults: a 0.3 m cube of 1 kg, dynamic (the robot can push it), yaw 0. The box is visible to the LiDAR only
-if it is at least 0.132 m tall (the scan plane), as in Gazebo. Prints the service's status_message; exits 0 on
-success, 1 on failure (service refused, or no simulator within --timeout seconds), 2 on bad arguments.
+Defaults: a 0.3 m cube of 1 kg, dynamic (the robot can push it), yaw 0, Gazebo's default grey; --color takes
+what a world file's `color` takes (red, "#ff8800", Gazebo/Red) and shows in the camera. The box is visible to
+the LiDAR only if it is at least 0.132 m tall (the scan plane), as in Gazebo. Prints the service's
+status_message; exits 0 on success, 1 on failure (service refused, or no simulator within --timeout seconds), 2 on
+bad arguments.
 """
 
 import argparse
@@ -15,6 +17,7 @@ import rospy
 from gazebo_msgs.srv import SpawnModel, SpawnModelRequest
 
 from tb3_sim.core.geometry import Pose2D
+from tb3_sim.core.materials import colour_from_name_or_hex
 from tb3_sim.core.model_xml import box_sdf
 from tb3_sim.ros import messages
 
@@ -41,6 +44,13 @@ def _positive(text):
     return value
 
 
+def _colour(text):
+    try:
+        return colour_from_name_or_hex(text)
+    except ValueError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
+
+
 def parser():
     result = argparse.ArgumentParser(prog="spawn_box", description=__doc__.split("\n\n")[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -53,6 +63,7 @@ def parser():
     result.add_argument("--yaw", type=_finite, default=0.0, help="heading (rad, CCW from +x; default 0)")
     result.add_argument("--static", action="store_true", help="a static box the robot cannot push")
     result.add_argument("--mass", type=_positive, default=DEFAULT_MASS_KG, help="mass (kg; default 1)")
+    result.add_argument("--color", type=_colour, help="colour the camera sees: a name, #rrggbb or Gazebo/Red")
     result.add_argument("--reference-frame", default="", help="a model whose frame X, Y, YAW are given in")
     result.add_argument("--timeout", type=_positive, default=DEFAULT_TIMEOUT_S,
                         help="seconds to wait for the simulator (default 10)")
@@ -73,7 +84,8 @@ def spawn_request(args):
     size_x, size_y = args.size[0], args.size[-1]
     height = args.height if args.height is not None else size_x
     return SpawnModelRequest(model_name=args.name,
-                             model_xml=box_sdf(args.name, size_x, size_y, height, args.static, args.mass),
+                             model_xml=box_sdf(args.name, size_x, size_y, height, args.static, args.mass,
+                                               args.color),
                              initial_pose=messages.pose_message(Pose2D(args.x, args.y, args.yaw)),
                              reference_frame=args.reference_frame)
 

@@ -10,8 +10,9 @@ All in frame camera_rgb_optical_frame (the plugin's frameName, also for depth: o
 `rate_hz` of sim time (30 by default), 1920x1080 by default with a horizontal field of view of 1.3439 rad
 (camera_info as Gazebo computes it: see core.camera).
 Images are queued (see output.Topic): a subscriber that cannot keep up misses frames, the simulation does not
-slow down. Lazy: nothing is rendered while no image topic has a subscriber; a camera_info subscriber alone gets camera_info
-without a render (Gazebo publishes it only with images). Depth is rendered only while someone takes it.
+slow down. Lazy: nothing is rendered while no image topic has a subscriber; a camera_info subscriber alone gets
+camera_info without a render (Gazebo publishes it only with images). Depth is rendered only while someone takes
+it.
 The picture is a 2.5D render of the 2D world (core.camera): walls, pillars and models as upright solids of their
 height and colour, a floor and a sky.
 """
