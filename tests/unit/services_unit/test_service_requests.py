@@ -3,11 +3,9 @@ import math
 
 import pytest
 
-from fruit_detector_pkg.fruit_report import fruit_report
 from movement_pkg.moves import move_motion, movement_velocity
 from services_quiz.turn import turn_motion
 from tb3_client.motion import InvalidRequest, Motion
-from tb3_client.scan_ahead import ObjectAhead
 
 
 @pytest.mark.parametrize("move, velocity", [("Turn Right", (0.1, -0.5)), ("Turn Left", (0.1, 0.5)),
@@ -51,19 +49,3 @@ def test_quiz_bad_turns(direction, rate, time):
     with pytest.raises(InvalidRequest):
         turn_motion(direction, rate, time)
 
-
-def test_fruit_ahead_is_described():
-    report = fruit_report("apple", ObjectAhead(1.234, -10.4), True)
-    assert report == (True, "looking for the apple: something 1.23 m ahead, 10 degrees to the right")
-
-
-def test_fruit_with_nothing_in_range():
-    assert fruit_report("Banana", None, True).message == "looking for the banana: nothing within LiDAR range ahead"
-
-
-def test_fruit_before_any_scan_fails():
-    assert fruit_report("apple", None, False).success is False
-
-
-def test_unknown_fruit_succeeds_with_unknown():
-    assert fruit_report("kiwi", None, True) == (True, "unknown fruit 'kiwi': I can look for an apple or a banana")

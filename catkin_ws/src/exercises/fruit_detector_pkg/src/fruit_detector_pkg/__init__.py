@@ -1,1 +1,3 @@
-"""fruit_detector_pkg: what the LiDAR says about a fruit request, as text (plain Python)."""
+"""fruit_detector_pkg: finding an apple or a banana in a camera image by colour (`fruit_detection`) and the
+/detect_fruit_service's request checks and replies (`fruit_request`), in plain Python; nodes/detect_fruit_node.py
+wires them to ROS."""
