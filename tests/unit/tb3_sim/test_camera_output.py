@@ -8,10 +8,11 @@ import pytest
 
 from tb3_sim.core.camera import project_point
 from tb3_sim.core.geometry import Pose2D
+from tb3_sim.core.lidar import cast_rays
 from tb3_sim.core.model_xml import parse_model_xml
 from tb3_sim.core.waffle import WAFFLE_CAMERA_HEIGHT_M, WAFFLE_CAMERA_X_M, WAFFLE_CAMERA_Y_M, WAFFLE_STATIC_TRANSFORMS
 from tb3_sim.core.world import World
-from tb3_sim.core.world_file import WorldDescription
+from tb3_sim.core.world_file import WorldDescription, load_world, shipped_world_path
 from tb3_sim.ros.outputs import OutputPublisher
 from tb3_sim.ros.outputs.camera import (
     COMPRESSED_TOPIC,
@@ -134,3 +135,22 @@ def test_static_tf_reaches_the_optical_frame_at_the_camera_mount():
     assert chain == ["camera_rgb_frame", "camera_link", "base_link", "base_footprint"]
     assert (x, y, z) == pytest.approx((WAFFLE_CAMERA_X_M, WAFFLE_CAMERA_Y_M, WAFFLE_CAMERA_HEIGHT_M))
     assert joints["camera_rgb_optical_frame"][2] == (-1.57, 0.0, -1.57)
+
+
+def test_depth_along_the_horizon_equals_the_lidar_style_range_of_each_columns_ray():
+    """In turtlebot3_world, the depth image's horizon row is the distance the LiDAR's ray caster finds along
+    each column's centre ray, projected on the optical axis."""
+    world = World(load_world(shipped_world_path("turtlebot3_world")), Pose2D(-2.0, -0.5, 0.3))
+    camera = CameraOutput(WIDTH, HEIGHT, 30.0)
+    reading = camera.read(world, world.time_s, {DEPTH_TOPIC})
+    intrinsics = camera.intrinsics
+    pose = world.robot.pose
+    x, y = pose.compose(WAFFLE_CAMERA_X_M, WAFFLE_CAMERA_Y_M)
+    columns = np.arange(0, WIDTH, 7)
+    offsets = np.arctan((intrinsics.cx - columns) / intrinsics.fx)
+    ranges = cast_rays((x, y), pose.yaw + offsets, world.obstacles(), 0.0, 5.0)
+    horizon_row = round(intrinsics.cy)
+    seen = np.isfinite(ranges) & (ranges * np.cos(offsets) > 0.45)
+    assert seen.sum() > len(columns) // 2
+    depth = reading.depth[horizon_row, columns]
+    assert depth[seen] == pytest.approx((ranges * np.cos(offsets))[seen], abs=0.01)
