@@ -41,6 +41,14 @@ def test_imu_yaw_rate():
     assert reading.yaw_rate == pytest.approx(1.5, abs=1e-4)
 
 
+def test_imu_does_not_difference_across_a_gap():
+    imu = Imu(max_gap_s=0.015)
+    imu.read(1.0, Pose2D(), Twist2D(0.0, 0.0, 0.0))
+    assert imu.read(1.01, Pose2D(), Twist2D(0.1, 0.0, 0.0)).accel_x == pytest.approx(10.0)
+    assert imu.read(2.0, Pose2D(), Twist2D(0.3, 0.0, 0.0)).accel_x == 0.0, "a second without readings"
+    assert imu.read(2.01, Pose2D(), Twist2D(0.31, 0.0, 0.0)).accel_x == pytest.approx(1.0)
+
+
 def test_schedule_averages_exactly_its_rate_on_a_coarser_step():
     schedule = PeriodicSchedule(30.0)
     fired = [i * PHYSICS_STEP_S for i in range(1, 2001) if schedule.due(i * PHYSICS_STEP_S)]

@@ -5,6 +5,7 @@ linear acceleration the finite difference of the world velocity between two read
 frame, **without gravity** (≈0 at rest, unlike a real IMU). No noise: the plugin's gaussianNoise is 0.
 """
 
+import math
 from dataclasses import dataclass
 
 from tb3_sim.core.geometry import Twist2D
@@ -22,9 +23,15 @@ class ImuReading:
 
 
 class Imu:
-    """Turns successive ground-truth states into IMU readings; remembers only the previous velocity."""
+    """Turns successive ground-truth states into IMU readings; remembers only the previous velocity.
 
-    def __init__(self):
+    `max_gap_s`: a reading more than this after the previous one reports zero acceleration, as the first one
+    does, because a velocity that old says nothing about the acceleration now (readings stop while nobody
+    subscribes to /imu, and start again when someone does).
+    """
+
+    def __init__(self, max_gap_s=math.inf):
+        self.max_gap_s = max_gap_s
         self.reset()
 
     def reset(self):
@@ -34,10 +41,11 @@ class Imu:
     def read(self, now_s, pose, twist_world):
         """Reading at `now_s` for a body at `pose` moving with `twist_world` (world frame).
 
-        The first reading after a reset, or one at the same time as the previous, reports zero acceleration.
+        The first reading after a reset, one at the same time as the previous, or one more than `max_gap_s`
+        after it reports zero acceleration.
         """
         accel = Twist2D()
-        if self._previous is not None and now_s > self._previous[0]:
+        if self._previous is not None and 0.0 < now_s - self._previous[0] <= self.max_gap_s:
             then_s, before = self._previous
             dt_s = now_s - then_s
             accel = Twist2D((twist_world.vx - before.vx) / dt_s, (twist_world.vy - before.vy) / dt_s)

@@ -30,8 +30,8 @@ class Output:
     """Base class of the periodic outputs. Subclasses set `rate_hz`, `lazy` and `frame_ids` as class
     attributes, build `self.topics` (a tuple of Topic) and implement `read`.
 
-    `rate_hz` is in simulated time; 0 means every physics step. `frame_ids` are the frames the messages are
-    stamped in (documentation, and the registry's tests).
+    `rate_hz` is in simulated time; 0 means every physics step; `self.schedule` (a PeriodicSchedule) says when a
+    reading is due. `frame_ids` are the frames the messages are stamped in (documentation, and the tests).
     """
 
     rate_hz = 0.0
@@ -41,10 +41,6 @@ class Output:
     def __init__(self):
         self.topics = ()
         self.schedule = PeriodicSchedule(self.rate_hz)
-
-    def due(self, now_s):
-        """True if a reading is due at `now_s` (then the schedule moves on by one period)."""
-        return self.schedule.due(now_s)
 
     def read(self, world, now_s, wanted):
         """The reading at `now_s` (world locked); `wanted` is the set of this output's topic names that have

@@ -4,6 +4,10 @@ Publishers are made by an injected `make_publisher(topic)` (the node passes rosp
 `publish(msg)` and `get_num_connections()`).
 """
 
+import math
+
+from tb3_sim.core.schedule import TIME_EPSILON_S
+
 
 class OutputPublisher:
     """The registered outputs (in publishing order) and one publisher per topic."""
@@ -11,6 +15,18 @@ class OutputPublisher:
     def __init__(self, outputs, make_publisher):
         self.outputs = tuple(outputs)
         self.publishers = {topic.name: make_publisher(topic) for output in self.outputs for topic in output.topics}
+        # Per output, its (topic, publisher) pairs, split into outputs that run every physics step (/clock) and
+        # periodic ones: collect() runs after every step, so it looks nothing up by name and asks the periodic
+        # outputs only when the earliest of them is due.
+        routes = [(output, tuple((topic, self.publishers[topic.name]) for topic in output.topics))
+                  for output in self.outputs]
+        self._routes = tuple(routes)
+        self._every_step = tuple(route for route in routes if route[0].schedule.period_s == 0.0)
+        self._periodic = tuple(route for route in routes if route[0].schedule.period_s > 0.0)
+        self._next_due_s = self._earliest_due()
+
+    def _earliest_due(self):
+        return min((output.schedule.next_due_s for output, _ in self._periodic), default=math.inf)
 
     def output(self, kind):
         """The registered output of class `kind` (e.g. ScanOutput), or None."""
@@ -19,11 +35,11 @@ class OutputPublisher:
     def latched(self, world):
         """(publisher, message) pairs for every latched topic, read now regardless of subscribers (at start)."""
         pairs = []
-        for output in self.outputs:
-            latched = [topic for topic in output.topics if topic.latch]
+        for output, routes in self._routes:
+            latched = [(topic, publisher) for topic, publisher in routes if topic.latch]
             if latched:
-                reading = output.read(world, world.time_s, {topic.name for topic in latched})
-                pairs.extend((self.publishers[topic.name], topic.convert(reading)) for topic in latched)
+                reading = output.read(world, world.time_s, {topic.name for topic, _ in latched})
+                pairs.extend((publisher, topic.convert(reading)) for topic, publisher in latched)
         return pairs
 
     def collect(self, world):
@@ -34,20 +50,30 @@ class OutputPublisher:
         """
         now_s = world.time_s
         due = []
-        for output in self.outputs:
-            if not output.due(now_s):
-                continue
-            wanted = [topic for topic in output.topics if self.publishers[topic.name].get_num_connections()]
-            if output.lazy and not wanted:
-                continue
-            reading = output.read(world, now_s, {topic.name for topic in wanted})
-            due.extend((self.publishers[topic.name], topic.convert(reading)) for topic in wanted)
+        for route in self._every_step:
+            self._publish_due(world, now_s, route, due)
+        if now_s + TIME_EPSILON_S >= self._next_due_s:
+            for route in self._periodic:
+                if route[0].schedule.due(now_s):
+                    self._publish_due(world, now_s, route, due)
+            self._next_due_s = self._earliest_due()
         return due
+
+    @staticmethod
+    def _publish_due(world, now_s, route, due):
+        """Append the (publisher, message) pairs of the output in `route`, due now, to `due`."""
+        output, routes = route
+        wanted = [(topic, publisher) for topic, publisher in routes if publisher.get_num_connections()]
+        if output.lazy and not wanted:
+            return
+        reading = output.read(world, now_s, {topic.name for topic, _ in wanted})
+        due.extend((publisher, topic.convert(reading)) for topic, publisher in wanted)
 
     def reset(self, now_s):
         """Every output starts afresh at `now_s` (after reset_simulation rewound the clock)."""
         for output in self.outputs:
             output.reset(now_s)
+        self._next_due_s = self._earliest_due()
 
     def forget_motion(self):
         """The robot or a model jumped (reset_world, a teleport)."""
