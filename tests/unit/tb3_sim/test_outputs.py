@@ -125,3 +125,24 @@ def test_view_scan_reuses_a_fresh_scan_and_replaces_a_stale_one(world):
     assert scan.for_view(world) is scan.latest
     world.run(1.0)
     assert scan.for_view(world).time_s == pytest.approx(world.time_s)
+
+
+def frames_of(message):
+    """The frame ids a message is stamped in (headers, TF parents and children, markers)."""
+    frames = set()
+    for part in [message, *getattr(message, "transforms", []), *getattr(message, "markers", [])]:
+        header = getattr(part, "header", None)
+        if header is not None and header.frame_id:
+            frames.add(header.frame_id)
+        if getattr(part, "child_frame_id", ""):
+            frames.add(part.child_frame_id)
+    return frames
+
+
+def test_every_message_is_in_the_frames_its_output_declares(world):
+    publisher = outputs()
+    declared = {topic.name: set(output.frame_ids) for output in publisher.outputs for topic in output.topics}
+    for _ in range(round(0.5 / world.step_s)):
+        world.step()
+        for fake, message in publisher.collect(world):
+            assert frames_of(message) <= declared[fake.topic.name], (fake.topic.name, frames_of(message))

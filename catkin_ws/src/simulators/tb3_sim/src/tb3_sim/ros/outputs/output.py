@@ -31,7 +31,7 @@ class Output:
     attributes, build `self.topics` (a tuple of Topic) and implement `read`.
 
     `rate_hz` is in simulated time; 0 means every physics step; `self.schedule` (a PeriodicSchedule) says when a
-    reading is due. `frame_ids` are the frames the messages are stamped in (documentation, and the tests).
+    reading is due. `frame_ids` are the frames its messages are stamped in (headers, TF frames, markers).
     """
 
     rate_hz = 0.0
