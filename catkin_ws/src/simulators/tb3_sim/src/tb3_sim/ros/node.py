@@ -42,7 +42,8 @@ Differences from Gazebo, on purpose:
 
 Threads: the main thread (with a window: a "physics" thread) steps physics and publishes; rospy runs every
 callback in its own thread. One lock guards the world: callbacks change it only between two steps. Publishers
-write synchronously from the loop thread (see `_synchronous_publisher`).
+write synchronously from the loop thread (see `_synchronous_publisher`), except the latched ones and the camera
+images, which rospy's writer threads send (see outputs.output.Topic).
 
 Time: physics runs in simulated time and every stamp is the world's time. The node is the clock, so it does not
 subscribe to its own /clock (rospy's `disable_rostime`: at 200 Hz x the real-time factor that echo would cost a
