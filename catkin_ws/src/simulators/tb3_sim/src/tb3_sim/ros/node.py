@@ -42,8 +42,8 @@ Differences from Gazebo, on purpose:
 
 Threads: the main thread (with a window: a "physics" thread) steps physics and publishes; rospy runs every
 callback in its own thread. One lock guards the world: callbacks change it only between two steps. Publishers
-write synchronously from the loop thread (see `_synchronous_publisher`), except the latched ones and the camera
-images, which rospy's writer threads send (see outputs.output.Topic).
+write synchronously from the loop thread, except the latched ones and the camera images, which rospy's writer
+threads send (see publishers).
 
 Time: physics runs in simulated time and every stamp is the world's time. The node is the clock, so it does not
 subscribe to its own /clock (rospy's `disable_rostime`: at 200 Hz x the real-time factor that echo would cost a
@@ -55,7 +55,6 @@ import os
 import sys
 import threading
 import time
-import warnings
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -80,6 +79,8 @@ from tb3_sim.ros.config import config_from_params
 from tb3_sim.ros.gazebo_api import GazeboApi
 from tb3_sim.ros.outputs import OutputPublisher, registered_outputs
 from tb3_sim.ros.outputs.scan import ScanOutput
+from tb3_sim.ros.publishers import output_publisher
+from tb3_sim.ros.stop_request import StopRequest
 from tb3_sim.view.scene import Trail, scene_of
 
 NODE_NAME = "gazebo"
@@ -104,7 +105,7 @@ class SimNode:
         if not config.paused:
             self._running.set()
         self._pacer = Pacer(config.real_time_factor)
-        self._outputs = OutputPublisher(registered_outputs(config), _publisher)
+        self._outputs = OutputPublisher(registered_outputs(config), output_publisher)
         self._scan = self._outputs.output(ScanOutput)
         if config.publish_static_tf:
             self._static_tf = rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True)
@@ -189,9 +190,9 @@ class SimNode:
         rospy.loginfo(f"snapshot written to {self.config.snapshot_path}")
         return EmptyResponse()
 
-    def spin(self):
-        """Step, publish and pace until ROS shuts down."""
-        while not rospy.is_shutdown():
+    def spin(self, stop):
+        """Step, publish and pace until ROS shuts down or `stop` (a StopRequest) is set."""
+        while not (rospy.is_shutdown() or stop.is_set()):
             if not self._running.wait(PAUSED_POLL_S):
                 self._pacer.restart(self._world.time_s, time.monotonic())
                 continue
@@ -212,8 +213,9 @@ class SimNode:
                 time.sleep(delay_s)
 
 
-def run_with_window(node):
-    """Show the window in the main thread (Qt's rule) and step physics in another until ROS shuts down."""
+def run_with_window(node, stop):
+    """Show the window in the main thread (Qt's rule) and step physics in another until ROS shuts down or `stop`
+    is set."""
     from PyQt5.QtCore import QTimer
     from PyQt5.QtWidgets import QApplication
 
@@ -222,9 +224,9 @@ def run_with_window(node):
 
     app = QApplication.instance() or QApplication([sys.argv[0]])
     window = SimWindow(node.scene, BoxTool(node), on_close=node.window_closed, log=rospy.loginfo)
-    physics = threading.Thread(target=node.spin, name="physics", daemon=True)
+    physics = threading.Thread(target=node.spin, args=(stop,), name="physics", daemon=True)
     shutdown_check = QTimer()
-    shutdown_check.timeout.connect(lambda: rospy.is_shutdown() and app.quit())
+    shutdown_check.timeout.connect(lambda: (rospy.is_shutdown() or stop.is_set()) and app.quit())
     shutdown_check.start(SHUTDOWN_CHECK_MS)
     node.window_opened()
     window.show()
@@ -236,28 +238,6 @@ def run_with_window(node):
 
 def has_display():
     return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
-
-
-def _publisher(topic):
-    """The rospy publisher of an output's `topic`: latched and queued ones keep one message for a writer thread,
-    the others are synchronous."""
-    if topic.latch or topic.queued:
-        return rospy.Publisher(topic.name, topic.message_class, queue_size=1, latch=topic.latch)
-    return _synchronous_publisher(topic.name, topic.message_class)
-
-
-def _synchronous_publisher(name, message_class):
-    """A publisher that writes to its subscribers' sockets in the calling thread (rospy's queue_size=None).
-
-    On purpose: rospy's queued publishers hand every message to a writer thread per subscriber, and that
-    thread hand-off costs more than the whole physics step; publishing from the loop thread makes the
-    simulator 3-4x faster. The catch: a subscriber process that stops reading altogether (suspended with
-    Ctrl-Z) holds the loop up once its TCP buffer is full. rospy's SyntaxWarning about the missing queue
-    size is silenced here because the choice is deliberate.
-    """
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", SyntaxWarning)
-        return rospy.Publisher(name, message_class, queue_size=None)
 
 
 def worlds_dir():
@@ -295,7 +275,9 @@ def main():
     """Entry point of `rosrun tb3_sim tb3_sim_node`; exits 1 with a one-line reason on bad parameters."""
     try:
         ensure_use_sim_time()
-        rospy.init_node(NODE_NAME, disable_rostime=True)
+        rospy.init_node(NODE_NAME, disable_rostime=True, disable_signals=True)
+        stop = StopRequest()
+        stop.install()
         try:
             config = config_from_params(rospy.get_param("~", {}), worlds_dir())
             world = build_world(config)
@@ -308,8 +290,9 @@ def main():
                       f"({config.x_pos}, {config.y_pos}, yaw {config.yaw}), real_time_factor "
                       f"{config.real_time_factor:g}{', paused' if config.paused else ''}")
         if not config.headless and has_display():
-            run_with_window(node)
+            run_with_window(node, stop)
         else:
-            node.spin()
+            node.spin(stop)
     except (KeyboardInterrupt, rospy.ROSInterruptException):
         pass
+    rospy.signal_shutdown("tb3_sim stopping")
