@@ -7,8 +7,8 @@ Each function's own time (cProfile's tottime) counts towards one share, by where
 physics (Box2D and the world, robot and drive), LiDAR ray casting, message building (our conversions and genpy's
 constructors), serialization, publishing (rospy's publish path and the socket writes), pacing and waiting, the
 output loop (stepping, deciding what is due and who subscribes), and the rest; start-up imports are left out. The
-profiler slows Python down, so the shares matter, not the absolute times. Printed as a table and written to bench-
-output/tb3_sim_profile.md; `run()` returns no target rows.
+profiler slows Python down, so the shares matter, not the absolute times. Printed as a table and written to
+bench-output/tb3_sim_profile.md; `run()` returns no target rows.
 """
 import pstats
 import signal
