@@ -1,8 +1,17 @@
 # Source me: `source scripts/env.sh` turns this terminal into a ROS 1 terminal for this workspace.
 #
 # - Debian's /usr/bin/python3 (through the project venv in .venv, which sees Debian's ROS modules) comes first
-#   on PATH, ahead of any pyenv/conda python3 that cannot import rospy and breaks catkin_make.
-# - The workspace overlay catkin_ws/devel/setup.bash is sourced (run scripts/setup first if it is missing).
+#   on PATH, ahead of any pyenv/conda python3 that cannot import rospy and breaks catkin_make. Every time this
+#   file is sourced, so the `src` alias repairs a terminal where `source ~/.bashrc` put another python3 first.
+# - The lab's workspace overlay catkin_ws/devel/setup.bash is sourced (run scripts/setup first if it is missing),
+#   then the student's workspace on top of it: $LAB_STUDENT_WS, default ~/catkin_ws. A package there shadows the
+#   lab's package of the same name (the ROS overlay rule); the lab's stay available otherwise. The workspace is
+#   created when it does not exist, as an overlay of the lab ready for `catkin build` (the course's command) or
+#   `catkin_make`, and sourced once built. LAB_STUDENT_WS=off leaves it out; LAB_STUDENT_WS=<folder> uses
+#   another folder.
+# - bash: rosbash's roscd, rosls, rosed, roscp, rospd, rosd and the other ROS shell functions, with Tab
+#   completion of ROS commands, packages, services and requests; in an interactive bash also Debian's
+#   bash-completion (Tab completion for catkin and every other command).
 # - ROS is bound to this machine only unless you chose otherwise before sourcing: ROS_HOSTNAME=localhost and
 #   ROS_MASTER_URI=http://localhost:11311 are set only when you have not set ROS_MASTER_URI, ROS_HOSTNAME or
 #   ROS_IP yourself. ROS 1 has no authentication: opening it to a network opens the robot to that network.
@@ -14,8 +23,10 @@
 
 if [ -n "${BASH_SOURCE[0]:-}" ]; then
     _lab_env_file="${BASH_SOURCE[0]}"
+    _lab_shell=bash
 else
     _lab_env_file="$0"   # zsh
+    _lab_shell=zsh
 fi
 LAB_ROOT="$(cd "$(dirname "$_lab_env_file")/.." && pwd)"
 export LAB_ROOT
@@ -25,22 +36,69 @@ _lab_user_master="${ROS_MASTER_URI:-}"
 _lab_user_hostname="${ROS_HOSTNAME:-}"
 _lab_user_ip="${ROS_IP:-}"
 
-# The venv first, once: its python3 is Debian's interpreter with Box2D and pytest added.
-case ":$PATH:" in
-    *":$LAB_ROOT/.venv/bin:"*) ;;
-    *) export PATH="$LAB_ROOT/.venv/bin:$PATH" ;;
-esac
-export VIRTUAL_ENV="$LAB_ROOT/.venv"
-hash -r 2>/dev/null
-
-if [ -f "$LAB_ROOT/catkin_ws/devel/setup.bash" ]; then
-    if [ -n "${ZSH_VERSION:-}" ]; then
-        source "$LAB_ROOT/catkin_ws/devel/setup.zsh"
-    else
-        source "$LAB_ROOT/catkin_ws/devel/setup.bash"
-    fi
+_lab_devel="$LAB_ROOT/catkin_ws/devel"
+if [ -f "$_lab_devel/setup.$_lab_shell" ]; then
+    source "$_lab_devel/setup.$_lab_shell"
 else
     echo "scripts/env.sh: the workspace is not built yet; run scripts/setup first." >&2
+fi
+
+# The student's workspace, on top of the lab's.
+_lab_student_ws="${LAB_STUDENT_WS:-${HOME:+$HOME/catkin_ws}}"
+if [ -n "$_lab_student_ws" ] && [ "$_lab_student_ws" != off ] && [ -f "$_lab_devel/setup.sh" ]; then
+    if [ ! -e "$_lab_student_ws" ]; then
+        if _lab_out="$(mkdir -p "$_lab_student_ws/src" && catkin_init_workspace "$_lab_student_ws/src" 2>&1 \
+            && catkin config --init --workspace "$_lab_student_ws" --extend "$_lab_devel" \
+                --cmake-args -DPYTHON_EXECUTABLE="$LAB_ROOT/.venv/bin/python3" 2>&1)"; then
+            echo "scripts/env.sh: created your catkin workspace $_lab_student_ws: your packages go in its src" \
+                "folder; build with catkin build (or catkin_make) there. LAB_STUDENT_WS=off opts out." >&2
+        else
+            echo "scripts/env.sh: could not create your catkin workspace $_lab_student_ws:" >&2
+            echo "$_lab_out" | tail -n 5 >&2
+        fi
+    fi
+    if [ -f "$_lab_student_ws/devel/setup.$_lab_shell" ]; then
+        source "$_lab_student_ws/devel/setup.$_lab_shell"
+        case ":$ROS_PACKAGE_PATH:" in
+            *":$LAB_ROOT/catkin_ws/src:"*) ;;
+            *)
+                echo "scripts/env.sh: $_lab_student_ws was built without the lab underneath, so it would hide" \
+                    "the lab's packages; left out. Rebuild it in this terminal: cd $_lab_student_ws &&" \
+                    "catkin clean -y && catkin build (catkin_make: rm -r build devel && catkin_make)" >&2
+                source "$_lab_devel/setup.$_lab_shell"
+                ;;
+        esac
+    fi
+fi
+unset _lab_student_ws _lab_out
+
+# The venv first, and only once, wherever it was before: its python3 is Debian's interpreter with Box2D and
+# pytest added.
+_lab_venv_bin="$LAB_ROOT/.venv/bin"
+_lab_rest="$PATH:"
+_lab_path=""
+while [ -n "$_lab_rest" ]; do
+    _lab_entry="${_lab_rest%%:*}"
+    _lab_rest="${_lab_rest#*:}"
+    [ "$_lab_entry" = "$_lab_venv_bin" ] || _lab_path="$_lab_path:$_lab_entry"
+done
+export PATH="$_lab_venv_bin$_lab_path"
+export VIRTUAL_ENV="$LAB_ROOT/.venv"
+hash -r 2>/dev/null
+unset _lab_venv_bin _lab_rest _lab_path _lab_entry
+
+# rosbash's functions and completions (Debian installs them as a bash completion file that nothing sources).
+if [ "$_lab_shell" = bash ]; then
+    case "$-" in
+        *i*)
+            if [ -z "${BASH_COMPLETION_VERSINFO:-}" ] && [ -f /usr/share/bash-completion/bash_completion ]; then
+                source /usr/share/bash-completion/bash_completion
+            fi
+            ;;
+    esac
+    if [ -f /usr/share/bash-completion/completions/rosbash ]; then
+        source /usr/share/bash-completion/completions/rosbash
+    fi
 fi
 
 if [ -z "$_lab_user_master$_lab_user_hostname$_lab_user_ip" ]; then
@@ -51,14 +109,14 @@ else
 fi
 unset _lab_user_master _lab_user_hostname _lab_user_ip
 
-_lab_loopback="$LAB_ROOT/catkin_ws/devel/lib/libros_loopback.so"
+_lab_loopback="$_lab_devel/lib/libros_loopback.so"
 if [ -f "$_lab_loopback" ]; then
     case ":${LD_PRELOAD:-}:" in
         *":$_lab_loopback:"*) ;;
         *) export LD_PRELOAD="$_lab_loopback${LD_PRELOAD:+:$LD_PRELOAD}" ;;
     esac
 fi
-unset _lab_loopback
+unset _lab_loopback _lab_devel _lab_shell
 
 alias src="source '$LAB_ROOT/scripts/env.sh'"
 _lab_tb3_launch="$LAB_ROOT/catkin_ws/src/compat/turtlebot3_gazebo/launch"

@@ -16,6 +16,14 @@ def pytest_configure(config):
     if "ROS_PACKAGE_PATH" not in os.environ or "catkin_ws" not in os.environ.get("CMAKE_PREFIX_PATH", ""):
         raise pytest.UsageError("not a ROS terminal for this workspace: run scripts/test, or "
                                 "`source scripts/env.sh` first")
+    overlay = os.environ["CMAKE_PREFIX_PATH"].split(":")[0]
+    if Path(overlay) != REPO_ROOT / "catkin_ws" / "devel":
+        raise pytest.UsageError("the workspace {} overlays the lab in this terminal, so its packages would be tested "
+                                "instead of the lab's: run scripts/test, or `LAB_STUDENT_WS=off source "
+                                "scripts/env.sh` first".format(overlay))
+    # Whatever a test starts that sources scripts/env.sh leaves the user's ~/catkin_ws alone; the tests of the
+    # student's workspace set LAB_STUDENT_WS and HOME themselves.
+    os.environ["LAB_STUDENT_WS"] = "off"
 
 
 @pytest.fixture(scope="module")

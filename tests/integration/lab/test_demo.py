@@ -55,6 +55,15 @@ def pixel_rgb(image, x, y):
     return colour.red(), colour.green(), colour.blue()
 
 
+def test_demo_prints_no_false_warnings(demo_run):
+    """Nothing was restarted and the tour starts once the master is up: neither rospy's complaint about a master
+    not running yet nor master_reconnect's re-registration line, in the demo's output or its launch log."""
+    launch_log = (REPO_ROOT / "demo-output" / "week4_demo_launch.log").read_text()
+    for text in ("Unable to register", "Unable to immediately register", "re-registered"):
+        assert text not in demo_run.stdout, demo_run.stdout
+        assert text not in launch_log, launch_log
+
+
 def test_demo_leaves_no_process_behind(demo_run):
     leftover = subprocess.run(["pgrep", "-f", "week4_demo.launch"], stdout=subprocess.PIPE, text=True)
     assert leftover.stdout.strip() == ""

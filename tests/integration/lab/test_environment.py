@@ -1,5 +1,7 @@
-"""scripts/env.sh makes a ROS terminal for this workspace whatever python3 came first on PATH, binds ROS to
-localhost unless the user chose otherwise, and scripts/setup re-runs as a no-op."""
+"""scripts/env.sh makes a ROS terminal for this workspace whatever python3 came first on PATH (also when it is
+sourced again after something put another python3 first), binds ROS to localhost unless the user chose
+otherwise, and scripts/setup re-runs as a no-op. HOME is a temporary folder (env.sh creates the student's
+workspace there)."""
 import os
 import subprocess
 from pathlib import Path
@@ -20,9 +22,17 @@ def foreign_python_first(tmp_path):
     return "{}:/usr/local/bin:/usr/bin:/bin".format(shim_dir)
 
 
+@pytest.fixture(autouse=True)
+def home(tmp_path, monkeypatch):
+    """A temporary HOME for in_fresh_terminal."""
+    monkeypatch.setenv("HOME", str(tmp_path / "home"))
+    return tmp_path / "home"
+
+
 def in_fresh_terminal(script, path, **env):
-    """Run `script` in `bash` with a minimal environment after `source scripts/env.sh`."""
-    clean = {"HOME": os.environ["HOME"], "PATH": path, **env}
+    """Run `script` in `bash` with a minimal environment (HOME from the `home` fixture, no student workspace:
+    test_student_workspace.py tests that) after `source scripts/env.sh`."""
+    clean = {"HOME": os.environ["HOME"], "PATH": path, "LAB_STUDENT_WS": "off", **env}
     result = subprocess.run(["bash", "-c", "source scripts/env.sh && " + script], cwd=REPO_ROOT, env=clean,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=300)
     return result.returncode, result.stdout
@@ -35,6 +45,18 @@ def test_venv_python_wins_and_imports_ros(foreign_python_first):
     assert code == 0, output
     assert output.splitlines()[0] == str(REPO_ROOT / ".venv" / "bin" / "python3")
     assert "imports ok" in output
+
+
+def test_sourcing_again_puts_the_venv_first_again(foreign_python_first):
+    """What `src` does after `source ~/.bashrc` let pyenv put its python3 first (the venv stays on PATH)."""
+    shims = foreign_python_first.split(":")[0]
+    code, output = in_fresh_terminal(
+        'export PATH="{}:$PATH" && source scripts/env.sh && command -v python3 && echo "$PATH"'.format(shims),
+        foreign_python_first)
+    assert code == 0, output
+    venv_bin = str(REPO_ROOT / ".venv" / "bin")
+    assert output.splitlines()[0] == venv_bin + "/python3"
+    assert output.splitlines()[1].split(":") == [venv_bin, shims, shims, "/usr/local/bin", "/usr/bin", "/bin"]
 
 
 def test_ros_tools_are_on_path(foreign_python_first):

@@ -108,11 +108,20 @@ def test_movement_refuses_other_words_without_motion(robot):
     assert velocity(robot) == pytest.approx((0.0, 0.0), abs=0.001)
 
 
-def test_movement_client(ros_master, robot):
-    code, output = run(ros_master, "rosrun", "movement_pkg", "movement_client.py", "Stop")
-    assert code == 0 and "success = True" in output
-    code, output = run(ros_master, "rosrun", "movement_pkg", "movement_client.py")
-    assert code == 1 and "usage: rosrun movement_pkg movement_client.py" in output
+@pytest.mark.parametrize("executable", ["movement_client", "movement_client.py"])
+def test_movement_client(ros_master, robot, executable):
+    code, output = run(ros_master, "rosrun", "movement_pkg", executable, "Stop")
+    assert code == 0 and "Result of the call to /movement: success = True" in output
+    code, output = run(ros_master, "rosrun", "movement_pkg", executable)
+    assert code == 1 and 'usage: rosrun movement_pkg movement_client "<move>"' in output
+
+
+def test_movement_client_with_a_direction_calls_move(ros_master, robot):
+    before = robot.pose()
+    code, output = run(ros_master, "rosrun", "movement_pkg", "movement_client", "left", "0.2", "2")
+    assert code == 0 and "Result of the call to /move: success = True" in output, output
+    after = robot.settled_pose()
+    assert angle_between(before[2], after[2]) == pytest.approx(0.4, abs=0.05)
 
 
 def test_move_drives_for_the_given_time_then_stops(robot):
@@ -170,15 +179,15 @@ def test_fruit_service_answers_from_the_camera_and_publishes(robot):
 
 
 def test_parameter_clients_change_what_the_node_logs(ros_master, robot):
-    node = ros_master.rosrun("parameters_pkg", "parameters_node.py")
+    node = ros_master.rosrun("python_parameters", "parameters_node")
     wait_for_service(ros_master.uri, "/minimal_param_node/get_loggers")
-    code, output = run(ros_master, "rosrun", "parameters_pkg", "get_parameters_client.py")
+    code, output = run(ros_master, "rosrun", "python_parameters", "get_parameters_client")
     assert code == 0 and "/minimal_param_node/my_parameter = world" in output
-    code, output = run(ros_master, "rosrun", "parameters_pkg", "set_parameters_client.py", "my_parameter", "earth")
+    code, output = run(ros_master, "rosrun", "python_parameters", "set_parameters_client", "my_parameter", "earth")
     assert code == 0, output
     set_at = time.monotonic()
     while "my_parameter: earth" not in node.output():
         assert time.monotonic() - set_at < 2.0, node.output()[-500:]
         time.sleep(0.05)
-    code, output = run(ros_master, "rosrun", "parameters_pkg", "set_parameters_client.py", "their_parameter", "x")
+    code, output = run(ros_master, "rosrun", "python_parameters", "set_parameters_client", "their_parameter", "x")
     assert code == 1 and "usage:" in output

@@ -34,7 +34,7 @@ class Turtlesim:
     """The module's node, a probe subscribed to turtle1's pose, and the GraphWatch."""
 
     def __init__(self, ros_master):
-        self.process = ros_master.rosrun("turtlesim", "turtlesim_node", "_headless:=true",
+        self.process = ros_master.rosrun("turtlesim", "turtlesim_node", "_headless:=true", "_snapshot_service:=true",
                                          "_snapshot_path:={}".format(ros_master.workdir / "turtlesim.png"))
         for name in SERVICES:
             wait_for_service(ros_master.uri, name)

@@ -1,7 +1,8 @@
 """turtlesim_node against a real master: its graph, services (success and failure as rospy and
 rosservice see them), motion, rate, walls, pen and color_sensor, background params, snapshot,
-and bad input. One headless node (`_headless:=true`) serves the whole module; each test starts
-from /reset where it needs a known state."""
+and bad input. One headless node (`_headless:=true`, with the replica's snapshot service turned on) serves
+the whole module; each test starts from /reset where it needs a known state. The default graph and console
+format are in test_turtlesim_parity.py."""
 import math
 import re
 import subprocess
@@ -42,7 +43,7 @@ def master_api(master):
 
 @pytest.fixture(scope="module")
 def sim(ros_master, probe):
-    process = ros_master.rosrun("turtlesim", "turtlesim_node", "_headless:=true")
+    process = ros_master.rosrun("turtlesim", "turtlesim_node", "_headless:=true", "_snapshot_service:=true")
     wait_for_service(ros_master.uri, "/turtlesim/snapshot")
     wait_for_topic(ros_master.uri, POSE)
     probe.subscribe(POSE, "turtlesim/Pose")
@@ -123,7 +124,7 @@ def test_services_have_the_original_types(ros_master, sim):
         "/kill": "turtlesim/Kill", "/turtle1/set_pen": "turtlesim/SetPen",
         "/turtle1/teleport_absolute": "turtlesim/TeleportAbsolute",
         "/turtle1/teleport_relative": "turtlesim/TeleportRelative",
-        "/turtlesim/snapshot": "std_srvs/Empty",
+        "/turtlesim/snapshot": "std_srvs/Empty",   # _snapshot_service:=true; the original has none
         "/turtlesim/get_loggers": "roscpp/GetLoggers",
         "/turtlesim/set_logger_level": "roscpp/SetLoggerLevel",
     }
@@ -142,7 +143,7 @@ def test_background_params_are_private_ints_with_the_defaults(ros_master, sim):
 
 def test_start_log_lines(sim):
     output = sim.output()
-    assert "[INFO] [" in output
+    assert "[ INFO] [" in output
     assert "]: Starting turtlesim with node name /turtlesim\n" in output
     assert "]: Spawning turtle [turtle1] at x=[5.544445], y=[5.544445], theta=[0.000000]\n" in output
 
@@ -201,7 +202,7 @@ def test_walls_clamp_with_the_warning(fresh, probe):
     probe.publish("/turtle1/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 2.0}})
     pose = next_pose(probe, lambda p: p["x"] == WORLD_SIZE and p["linear_velocity"] == 2.0)
     assert pose["y"] == pytest.approx(3.0)
-    warning = re.compile(r"\[WARN\] \[[\d.]+\]: Oh no! I hit the wall! \(Clamping from \[x=11\.1\d{5}, "
+    warning = re.compile(r"\[ WARN\] \[\d+\.\d{9}\]: Oh no! I hit the wall! \(Clamping from \[x=11\.1\d{5}, "
                          r"y=8\.088889\]\)")
     wait_until(lambda: len(warning.findall(fresh.output())) >= 3, 5, "repeated wall warnings")
 

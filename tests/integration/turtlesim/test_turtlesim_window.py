@@ -69,8 +69,8 @@ def window_sim(ros_master, probe, tmp_path_factory, monkeypatch_module):
     info = tmp_path_factory.mktemp("xvfb") / "display"
     ros_master.start(["env", "-u", "QT_QPA_PLATFORM", "xvfb-run", "-a", "-s", "-screen 0 640x480x24",
                       "sh", "-c",
-                      'echo "$DISPLAY $XAUTHORITY" > "$0"; exec rosrun turtlesim turtlesim_node __ns:=/win',
-                      str(info)], "turtlesim-xvfb")
+                      'echo "$DISPLAY $XAUTHORITY" > "$0"; exec rosrun turtlesim turtlesim_node __ns:=/win '
+                      '_snapshot_service:=true', str(info)], "turtlesim-xvfb")
     wait_for_service(ros_master.uri, NS + "/turtlesim/snapshot", timeout_s=30)
     display, xauthority = info.read_text().split()
     monkeypatch_module.setenv("XAUTHORITY", xauthority)

@@ -12,6 +12,7 @@ from std_srvs.srv import Empty
 
 from turtlesim.core.draw_square import SquareDriver
 from turtlesim.msg import Pose
+from turtlesim.ros.console import use_roscpp_console
 from turtlesim.ros.log import ros_log
 
 NODE_NAME = 'draw_square'
@@ -54,6 +55,7 @@ def call_reset():
 def main():
     """Run the node until shutdown; returns the exit code."""
     rospy.init_node(NODE_NAME)
+    use_roscpp_console()
     SquareNode()
     rospy.spin()
     return 0

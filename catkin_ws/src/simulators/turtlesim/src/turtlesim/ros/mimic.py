@@ -13,6 +13,7 @@ import rospy
 from geometry_msgs.msg import Twist
 
 from turtlesim.msg import Pose
+from turtlesim.ros.console import use_roscpp_console
 
 NODE_NAME = 'turtle_mimic'
 
@@ -34,6 +35,7 @@ class Mimic:
 def main():
     """Run the node until shutdown; returns the exit code."""
     rospy.init_node(NODE_NAME)
+    use_roscpp_console()
     Mimic(rospy.resolve_name('input'), rospy.resolve_name('output'))
     rospy.spin()
     return 0

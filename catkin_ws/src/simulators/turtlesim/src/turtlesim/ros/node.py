@@ -7,12 +7,15 @@ Graph (names relative to the node's namespace unless marked ~private), as the or
   <name>/set_pen, <name>/teleport_absolute, <name>/teleport_relative;
 * ~background_r, ~background_g, ~background_b (int, 69/86/255): written at start only when
   absent, read at start, clear and reset.
-Added by the replica:
-* ~snapshot (std_srvs/Empty): saves the current view (trails and turtles) as PNG to
-  ~snapshot_path (string, read at each call; default $ROS_HOME/turtlesim.png, ~ expanded).
-  A path that cannot be written fails the call with a text naming it.
+Added by the replica, off unless asked for, so `rosservice list` and `rosnode info` show the
+original's graph:
+* ~snapshot_service (bool, default false): true advertises ~snapshot (std_srvs/Empty), which
+  saves the current view (trails and turtles) as PNG to ~snapshot_path (string, read at each
+  call; default $ROS_HOME/turtlesim.png, ~ expanded). A path that cannot be written fails the
+  call with a text naming it.
 * ~headless (bool, default false): true never opens a window. Without it a 500x500 window
   titled TurtleSim opens when $DISPLAY names a reachable X server; ROS behaviour is identical.
+Console lines are in roscpp's format (`[ INFO] [secs.nanosecs]: ...`, see ros/console.py).
 
 Timing: every TICK_INTERVAL_MS of wall-clock time the core steps by its fixed DT; /use_sim_time
 plays no part (the original's QTimer). Callbacks run on rospy's threads but hold one lock, so
@@ -34,6 +37,7 @@ from turtlesim.core.constants import BACKGROUND_PARAMS, DEFAULT_BACKGROUND, TICK
 from turtlesim.core.errors import InvalidNameError, TurtleSimError, UnknownTurtleError
 from turtlesim.core.simulation import TurtleSim
 from turtlesim.core.ticker import run_ticks
+from turtlesim.ros.console import use_roscpp_console
 from turtlesim.ros.log import ros_log
 from turtlesim.ros.service import RoscppStyleService, ServiceFailure
 from turtlesim.ros.turtle import TurtleInterfaces
@@ -88,12 +92,13 @@ class TurtleSimNode:
     the timer loop.
     """
 
-    def __init__(self, stop, rng=None):
+    def __init__(self, stop, snapshot_service=False, rng=None):
         """Write default params, start the core (logs the start line and spawns turtle1),
-        advertise turtle1's interfaces, then the global and the ~snapshot services.
+        advertise turtle1's interfaces, then the global services (and ~snapshot if asked).
 
         Args:
             stop: threading.Event; once set, `tick` returns False and `wait` returns True.
+            snapshot_service: advertise ~snapshot too.
             rng: random.Random for the turtles' looks.
         """
         self._lock = threading.Lock()
@@ -110,8 +115,9 @@ class TurtleSimNode:
             RoscppStyleService('reset', Empty, self._on_reset),
             RoscppStyleService('spawn', Spawn, self._on_spawn),
             RoscppStyleService('kill', Kill, self._on_kill),
-            RoscppStyleService('~snapshot', Empty, self._on_snapshot),
         ]
+        if snapshot_service:
+            self._services.append(RoscppStyleService('~snapshot', Empty, self._on_snapshot))
 
     def tick(self):
         """One update: step the core at the current wall time, publish pose then color_sensor
@@ -244,12 +250,12 @@ def snapshot_path():
     return os.path.expanduser(path)
 
 
-def read_headless():
-    """~headless as a bool (default False); ValueError naming the parameter otherwise."""
-    value = rospy.get_param('~headless', False)
+def read_flag(name):
+    """~name as a bool (default False); ValueError naming the parameter otherwise."""
+    value = rospy.get_param('~' + name, False)
     if not isinstance(value, bool):
         raise ValueError('Parameter %s must be true or false, got %r'
-                         % (rospy.resolve_name('~headless'), value))
+                         % (rospy.resolve_name('~' + name), value))
     return value
 
 
@@ -277,14 +283,16 @@ def main():
     for signum in (signal.SIGINT, signal.SIGTERM):
         signal.signal(signum, lambda *_: stop.set())
     rospy.init_node(NODE_NAME, disable_signals=True)
+    use_roscpp_console()
     try:
-        headless = read_headless()
+        headless = read_flag('headless')
+        snapshot_service = read_flag('snapshot_service')
     except ValueError as error:
         rospy.logfatal(str(error))
         rospy.signal_shutdown(str(error))
         return 2
     with_window = window_wanted(headless)
-    node = TurtleSimNode(stop)
+    node = TurtleSimNode(stop, snapshot_service)
     keep_registered()
     try:
         if with_window:

@@ -4,6 +4,10 @@ roscpp answers a failed call with ok-byte 0 and the raw error text: an empty tex
 callback returns false, the exception's what() when it throws. A rospy client then raises
 ServiceException('service [/spawn] responded with an error: b\'\''). A plain rospy.Service
 cannot send that: it prefixes its own words ('service cannot process request: ...').
+
+A client that connects and hangs up before sending its request (`rosservice call` with arguments of the wrong
+type does) makes roscpp log nothing; rospy.Service logs an ERROR 'incoming connection failed'. This service
+logs that at DEBUG level only.
 """
 import rospy
 
@@ -53,3 +57,20 @@ class RoscppStyleService(rospy.Service):
         except Exception as error:  # re-raised inside rospy's sender, which reports it
             outcome = _Outcome(error=error)
         super()._handle_request(transport, outcome)
+
+    def handle(self, transport, header):
+        """Serve one connection (rospy.Service.handle) without the ERROR line when the client hangs up."""
+        if header.get('probe') == '1':
+            transport.close()
+            return
+        persistent = header.get('persistent', '').lower() in ('1', 'true')
+        while True:
+            try:
+                for request in transport.receive_once():
+                    self._handle_request(transport, request)
+            except rospy.exceptions.TransportTerminated as error:
+                rospy.logdebug('service [%s]: the client closed the connection: %s', self.resolved_name, error)
+                break
+            if not persistent:
+                break
+        transport.close()

@@ -14,6 +14,7 @@ import rospy
 from geometry_msgs.msg import Twist
 
 from turtlesim.core.teleop_keys import BANNER, DEFAULT_SCALE_ANGULAR, DEFAULT_SCALE_LINEAR, KEY_QUIT, command_for_key
+from turtlesim.ros.console import use_roscpp_console
 from turtlesim.tools.terminal import RawTerminal
 
 POLL_INTERVAL_S = 0.1
@@ -85,6 +86,7 @@ def main():
         print(NOT_A_TERMINAL, file=sys.stderr)
         return 1
     rospy.init_node(NODE_NAME)
+    use_roscpp_console()
     try:
         teleop = KeyTeleop(read_scale('scale_linear', DEFAULT_SCALE_LINEAR),
                            read_scale('scale_angular', DEFAULT_SCALE_ANGULAR))

@@ -2,7 +2,7 @@
 """Set another node's my_parameter or your_parameter through the parameter server (the ROS 1 way: the
 node reads it back on its next log tick). The value is read as YAML, as `rosparam set` does.
 
-usage: rosrun parameters_pkg set_parameters_client.py <my_parameter|your_parameter> <value> [node]
+usage: rosrun python_parameters set_parameters_client <my_parameter|your_parameter> <value> [node]
 """
 import sys
 
@@ -11,7 +11,7 @@ import yaml
 
 PARAMETERS = ("my_parameter", "your_parameter")
 DEFAULT_NODE = "/minimal_param_node"
-USAGE = "usage: set_parameters_client.py <{}> <value> [node]".format("|".join(PARAMETERS))
+USAGE = "usage: rosrun python_parameters set_parameters_client <{}> <value> [node]".format("|".join(PARAMETERS))
 
 if __name__ == "__main__":
     arguments = rospy.myargv(sys.argv)[1:]

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Print another node's my_parameter and your_parameter from the parameter server.
 
-usage: rosrun parameters_pkg get_parameters_client.py [node]     (node defaults to /minimal_param_node)
+usage: rosrun python_parameters get_parameters_client [node]     (node defaults to /minimal_param_node)
 """
 import sys
 
