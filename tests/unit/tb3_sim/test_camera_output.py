@@ -1,6 +1,7 @@
 """The camera output: Gazebo's R200 topics and encodings, laziness, what it shows where the projection says,
 and the static TF chain to its optical frame (fake publishers, no master)."""
 import math
+from dataclasses import replace
 
 import cv2
 import numpy as np
@@ -69,7 +70,7 @@ def camera_messages(world, subscribed):
 def world_with_red_box(x=1.5, y=0.0):
     world = World(WorldDescription("empty"))
     spec = parse_model_xml(RED_BOX_SDF)
-    world.spawn_model(spec.__class__(**{**spec.__dict__, "pose": Pose2D(x, y, 0.0)}))
+    world.spawn_model(replace(spec, pose=Pose2D(x, y, 0.0)))
     return world
 
 

@@ -23,16 +23,17 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
+from tb3_sim.core.camera import R200_HEIGHT_PX, R200_UPDATE_RATE_HZ, R200_WIDTH_PX
 from tb3_sim.core.errors import ConfigError
 from tb3_sim.core.waffle import WAFFLE_MODEL_NAME
 
 DEFAULT_WORLD = "empty"
 DEFAULT_SNAPSHOT_PATH = "/tmp/tb3_sim.png"
 WORLD_FILE_SUFFIX = ".yaml"
-# The Gazebo Waffle's realsense_R200 sensor: 1920x1080 at 30 Hz. Smaller images make lighter runs.
-DEFAULT_CAMERA_WIDTH_PX = 1920
-DEFAULT_CAMERA_HEIGHT_PX = 1080
-DEFAULT_CAMERA_RATE_HZ = 30.0
+# The Gazebo Waffle's realsense_R200 sensor (core.camera): 1920x1080 at 30 Hz. Smaller images make lighter runs.
+DEFAULT_CAMERA_WIDTH_PX = R200_WIDTH_PX
+DEFAULT_CAMERA_HEIGHT_PX = R200_HEIGHT_PX
+DEFAULT_CAMERA_RATE_HZ = R200_UPDATE_RATE_HZ
 CAMERA_SIZE_RANGE_PX = (16, 4096)
 MAX_CAMERA_RATE_HZ = 1000.0
 
