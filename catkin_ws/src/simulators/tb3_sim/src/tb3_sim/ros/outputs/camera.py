@@ -19,7 +19,6 @@ height and colour, a floor and a sky.
 
 from typing import NamedTuple, Optional
 
-import cv2
 import numpy as np
 from sensor_msgs.msg import CameraInfo, CompressedImage, Image
 
@@ -115,6 +114,8 @@ class CameraOutput(Output):
     def _compressed_image(self, reading):
         message = self._header(CompressedImage(), reading.time_s)
         message.format = JPEG_FORMAT
+        import cv2  # about 0.4 s to import: paid at the first compressed frame, not at every simulator start
+
         bgr = cv2.cvtColor(reading.rgb, cv2.COLOR_RGB2BGR)
         message.data = cv2.imencode(".jpg", bgr, [cv2.IMWRITE_JPEG_QUALITY, JPEG_QUALITY])[1].tobytes()
         return message
