@@ -71,7 +71,8 @@ _CSS_COLOURS = {"lightgrey": (211, 211, 211), "lightgray": (211, 211, 211), "bro
                 "pink": (255, 192, 203)}
 
 
-def _to_rgb(channels):
+def rgb_from_unit(channels):
+    """(r, g, b) 0..255 from channels in [0, 1] (as SDF, URDF and world files give them)."""
     return tuple(round(_MAX_CHANNEL * c) for c in channels)
 
 
@@ -85,7 +86,7 @@ def material_rgb(name):
         close = difflib.get_close_matches(str(name), known, n=_SUGGESTIONS)
         hint = f"did you mean {' or '.join(close)}? " if close else ""
         raise UnknownMaterialError(f"unknown Gazebo material {name!r}; {hint}known: {', '.join(known)}")
-    return _to_rgb(material.diffuse)
+    return rgb_from_unit(material.diffuse)
 
 
 def rgba_text_to_rgb(text):
@@ -102,7 +103,7 @@ def rgba_text_to_rgb(text):
     bad = [part for part, value in zip(parts, channels) if not (math.isfinite(value) and 0.0 <= value <= 1.0)]
     if bad:
         raise ColourError(f"{expected}, got {text!r} ({', '.join(bad)} out of range)")
-    return _to_rgb(channels[:3])
+    return rgb_from_unit(channels[:3])
 
 
 def colour_from_name_or_hex(text):
@@ -143,7 +144,7 @@ DEFAULT_MODEL_RGB = material_rgb("Gazebo/Grey")
 # Walls saved by Gazebo's building editor use Gazebo/Grey.
 DEFAULT_WALL_RGB = material_rgb("Gazebo/Grey")
 # SDF <scene><background> default ".7 .7 .7 1" (sdformat scene.sdf): a plain light grey, not a blue sky.
-SKY_RGB = _to_rgb((0.7, 0.7, 0.7))
+SKY_RGB = rgb_from_unit((0.7, 0.7, 0.7))
 
 # The floor: gazebo_models' ground_plane (Gazebo/Grey) as Gazebo lights it from above. Fixed-function lighting
 # gives ambient_colour * scene_ambient + diffuse_colour * sun_diffuse * cos(sun from vertical), with the SDF
@@ -153,5 +154,5 @@ _SUN_DIFFUSE = 0.8
 _SUN_DIRECTION = (-0.5, 0.5, -1.0)
 _SUN_COS_FROM_VERTICAL = -_SUN_DIRECTION[2] / math.hypot(*_SUN_DIRECTION)
 _GROUND = GAZEBO_MATERIALS["Gazebo/Grey"]
-FLOOR_RGB = _to_rgb(a * _SCENE_AMBIENT + d * _SUN_DIFFUSE * _SUN_COS_FROM_VERTICAL
+FLOOR_RGB = rgb_from_unit(a * _SCENE_AMBIENT + d * _SUN_DIFFUSE * _SUN_COS_FROM_VERTICAL
                     for a, d in zip(_GROUND.ambient, _GROUND.diffuse))

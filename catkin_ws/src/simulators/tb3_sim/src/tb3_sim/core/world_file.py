@@ -38,7 +38,7 @@ import yaml
 
 from tb3_sim.core.errors import WorldFileError
 from tb3_sim.core.geometry import Pose2D
-from tb3_sim.core.materials import colour_from_name_or_hex
+from tb3_sim.core.materials import colour_from_name_or_hex, rgb_from_unit
 from tb3_sim.core.shapes import DEFAULT_STATIC_HEIGHT_M, Box, Circle, Cylinder, Polygon, Rgb, Segment
 
 GROUND_PLANE_NAME = "ground_plane"
@@ -213,7 +213,7 @@ class _Reader:
             channels = self.numbers(value, where, 3)
             if not all(0.0 <= c <= 1.0 for c in channels):
                 self.fail(where, f"expected [r, g, b] with each in [0, 1], got {value!r}")
-            return tuple(round(255 * c) for c in channels)
+            return rgb_from_unit(channels)
         if not isinstance(value, str):
             self.fail(where, f"expected a colour name, '#rrggbb', a Gazebo material or [r, g, b], got {value!r}")
         try:
