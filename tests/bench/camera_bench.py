@@ -18,11 +18,11 @@ import time
 import cv2
 import numpy as np
 
-from tb3_sim.core.camera import WAFFLE_R200_INTRINSICS, CameraIntrinsics, CameraRenderer
+from tb3_sim.core.camera import CameraIntrinsics, CameraRenderer
 from tb3_sim.core.geometry import Pose2D
 from tb3_sim.core.materials import FLOOR_RGB, SKY_RGB, material_rgb
 from tb3_sim.core.shapes import Box
-from tb3_sim.core.waffle import WAFFLE_CAMERA_HEIGHT_M
+from tb3_sim.core.turtlebot3 import WAFFLE_R200
 from tb3_sim.core.world import World
 from tb3_sim.core.world_file import ModelSpec, load_world, shipped_world_path
 from tb3_sim.ros.outputs.camera import camera_scene
@@ -31,7 +31,8 @@ FRAMES = 36
 WARM_UP_FRAMES = 3
 JPEG_QUALITY = 80
 SMALL_WIDTH_PX, SMALL_HEIGHT_PX = 640, 480
-R200_FRAME_PERIOD_MS = 1000.0 / 30.0
+R200_FRAME_PERIOD_MS = 1000.0 / WAFFLE_R200.rate_hz
+WAFFLE_R200_INTRINSICS = CameraIntrinsics.of(WAFFLE_R200)
 SPAWN = Pose2D(-2.0, -0.5, 0.0)
 # Boxes: name, centre x, y (m), size x, y, height (m), Gazebo material.
 BOXES = [("red", -1.0, -0.6, 0.3, 0.3, 0.3, "Gazebo/Red"), ("blue", 0.6, 0.55, 0.2, 0.4, 0.6, "Gazebo/Blue"),
@@ -61,13 +62,13 @@ def median_ms(work):
 
 
 def render_ms(intrinsics, depth=False):
-    renderer = CameraRenderer(intrinsics, WAFFLE_CAMERA_HEIGHT_M, FLOOR_RGB, SKY_RGB)
+    renderer = CameraRenderer(intrinsics, WAFFLE_R200.height_m, FLOOR_RGB, SKY_RGB)
     scene = turtlebot3_world_scene()
     return median_ms(lambda yaw: renderer.render(SPAWN.x, SPAWN.y, yaw, scene, depth=depth))
 
 
 def jpeg_ms():
-    renderer = CameraRenderer(WAFFLE_R200_INTRINSICS, WAFFLE_CAMERA_HEIGHT_M, FLOOR_RGB, SKY_RGB)
+    renderer = CameraRenderer(WAFFLE_R200_INTRINSICS, WAFFLE_R200.height_m, FLOOR_RGB, SKY_RGB)
     scene = turtlebot3_world_scene()
     frames = {}
 

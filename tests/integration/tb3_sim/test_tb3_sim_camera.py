@@ -138,8 +138,11 @@ def test_image_view_shows_the_stream(ros_master, camera):
     assert viewer.running(), "image_view exited:\n" + viewer.output()
 
 
-def test_default_camera_is_gazebos_1920x1080_at_30_hz(ros_master):
-    dump = subprocess.run(["roslaunch", "--dump-params", "tb3_sim", "tb3_sim.launch"], env=ros_master.env,
+def test_by_default_the_launch_file_leaves_the_camera_to_the_model(ros_master):
+    """No camera_* parameters unless given, so each robot's camera keeps its model's size and rate (the Waffle's
+    R200: 1920x1080 at 30 Hz; see the unit tests of the camera output)."""
+    env = {k: v for k, v in ros_master.env.items() if k != "TURTLEBOT3_MODEL"}
+    dump = subprocess.run(["roslaunch", "--dump-params", "tb3_sim", "tb3_sim.launch"], env=env,
                           capture_output=True, text=True, timeout=60).stdout
-    assert "/gazebo/camera_width: 1920" in dump and "/gazebo/camera_height: 1080" in dump
-    assert "/gazebo/camera_rate: 30.0" in dump
+    assert "/gazebo/model: waffle" in dump
+    assert "camera_" not in dump

@@ -97,7 +97,7 @@ def test_delete_model(sim):
     reply = call("delete_model", DeleteModel, model_name="doomed")
     assert (reply.success, reply.status_message) == (False, "DeleteModel: model does not exist")
     reply = call("delete_model", DeleteModel, model_name="turtlebot3_waffle")
-    assert not reply.success and "is the robot" in reply.status_message
+    assert not reply.success and "is a robot" in reply.status_message
 
 
 def test_get_model_state_failures(sim):

@@ -7,21 +7,20 @@ import numpy as np
 import pytest
 
 from tb3_sim.core.camera import (
-    R200_CLIP_FAR_M,
-    R200_CLIP_NEAR_M,
-    R200_DEPTH_CUTOFF_MAX_M,
-    R200_DEPTH_CUTOFF_MIN_M,
-    WAFFLE_R200_INTRINSICS,
+    CLIP_FAR_M,
+    CLIP_NEAR_M,
     CameraIntrinsics,
     CameraRenderer,
     CameraScene,
     project_point,
 )
+from tb3_sim.core.turtlebot3 import WAFFLE_R200
 
 MOUNT_M = 0.113
 SKY = (200, 200, 220)
 FLOOR = (90, 90, 90)
 SMALL = CameraIntrinsics(640, 480, 1.3439)
+WAFFLE_R200_INTRINSICS = CameraIntrinsics.of(WAFFLE_R200)
 RED, BLUE, GREEN, YELLOW = (255, 0, 0), (0, 0, 255), (0, 255, 0), (255, 255, 0)
 PILLAR_RADIUS_M = 0.05
 PILLAR_HEIGHT_M = 0.5
@@ -190,7 +189,7 @@ def test_objects_behind_the_camera_are_not_drawn():
 
 def test_an_empty_scene_is_floor_and_sky():
     frame = renderer().render(3.0, -1.0, 2.0, CameraScene.empty(), depth=True)
-    floor_row = math.ceil(SMALL.cy + SMALL.fy * MOUNT_M / R200_CLIP_FAR_M)
+    floor_row = math.ceil(SMALL.cy + SMALL.fy * MOUNT_M / CLIP_FAR_M)
     assert (frame.rgb[:floor_row] == SKY).all() and (frame.rgb[floor_row:] == FLOOR).all()
     assert np.isnan(frame.depth[:floor_row]).all() and np.isfinite(frame.depth[floor_row:]).all()
     bottom = SMALL.height - 1
@@ -210,14 +209,14 @@ def test_depth_along_the_horizon_is_the_distance_along_the_optical_axis():
 
 def test_depth_is_nan_in_the_sky_and_outside_the_band():
     world = scene([(6.0, -5.0, 6.0, 0.0), (0.35, 0.05, 0.35, 0.5)], [0.3, 0.3], [BLUE, RED])
-    cam = renderer(depth_min_m=R200_DEPTH_CUTOFF_MIN_M, depth_max_m=R200_DEPTH_CUTOFF_MAX_M)
+    cam = renderer(depth_min_m=WAFFLE_R200.depth_range_m[0], depth_max_m=WAFFLE_R200.depth_range_m[1])
     depth = cam.render(0, 0, 0, world, depth=True).depth
     horizon = math.floor(SMALL.cy)
     assert np.isnan(depth[0]).all()
     assert np.isnan(depth[horizon + 5, -1])  # the far wall, 6 m away
     assert np.isnan(depth[horizon + 5, 0])  # the near wall, 0.35 m away
     floor_depth = MOUNT_M * SMALL.fy / (np.arange(SMALL.height) - SMALL.cy)
-    in_band = (floor_depth > R200_DEPTH_CUTOFF_MIN_M) & (floor_depth < R200_DEPTH_CUTOFF_MAX_M)
+    in_band = (floor_depth > WAFFLE_R200.depth_range_m[0]) & (floor_depth < WAFFLE_R200.depth_range_m[1])
     column = round(SMALL.cx)
     np.testing.assert_allclose(depth[in_band, column], floor_depth[in_band], rtol=1e-6)
     assert np.isnan(depth[~in_band, column]).all()
@@ -230,7 +229,7 @@ def test_near_clip_and_far_clip():
         rgb = cam.render(0, 0, 0, wall).rgb.astype(int)
         return (rgb[..., 2] - rgb[..., 0] > OBJECT_CONTRAST).sum()
 
-    assert blue_pixels(renderer(near_clip_m=R200_CLIP_NEAR_M)) > SMALL.width * SMALL.height / 2
+    assert blue_pixels(renderer(near_clip_m=CLIP_NEAR_M)) > SMALL.width * SMALL.height / 2
     assert blue_pixels(renderer(near_clip_m=0.6)) == 0
     assert blue_pixels(renderer(far_clip_m=0.4)) == 0
 

@@ -11,7 +11,7 @@ from tb3_sim.core.camera import project_point
 from tb3_sim.core.geometry import Pose2D
 from tb3_sim.core.lidar import cast_rays
 from tb3_sim.core.model_xml import parse_model_xml
-from tb3_sim.core.waffle import WAFFLE_CAMERA_HEIGHT_M, WAFFLE_CAMERA_X_M, WAFFLE_CAMERA_Y_M, WAFFLE_STATIC_TRANSFORMS
+from tb3_sim.core.turtlebot3 import WAFFLE, WAFFLE_R200
 from tb3_sim.core.world import World
 from tb3_sim.core.world_file import WorldDescription, load_world, shipped_world_path
 from tb3_sim.ros.outputs import OutputPublisher
@@ -19,13 +19,14 @@ from tb3_sim.ros.outputs.camera import (
     COMPRESSED_TOPIC,
     DEPTH_INFO_TOPIC,
     DEPTH_TOPIC,
-    IMAGE_TOPICS,
     RGB_INFO_TOPIC,
     RGB_TOPIC,
     CameraOutput,
 )
+from tb3_sim.ros.robot_naming import RobotNaming
 
 WIDTH, HEIGHT = 320, 180
+IMAGE_TOPICS = {RGB_TOPIC, COMPRESSED_TOPIC, DEPTH_TOPIC}
 RED_BOX_SDF = """<sdf version="1.6"><model name="red_box"><static>true</static><link name="link">
   <collision name="c"><geometry><box><size>0.3 0.3 0.4</size></box></geometry></collision>
   <visual name="v"><geometry><box><size>0.3 0.3 0.4</size></box></geometry>
@@ -53,9 +54,14 @@ class CountingRenderer:
         return self.renderer.render(x, y, yaw, scene, depth=depth)
 
 
+def waffle_camera(world):
+    """The camera output of the world's Waffle, at WIDTH x HEIGHT, topics relative to the node."""
+    return CameraOutput(world.robot, RobotNaming(), WAFFLE_R200, WIDTH, HEIGHT)
+
+
 def camera_messages(world, subscribed):
     """One frame's messages {topic: message} with subscribers on `subscribed`, and the renderer's calls."""
-    camera = CameraOutput(WIDTH, HEIGHT, 30.0)
+    camera = waffle_camera(world)
     camera.renderer = CountingRenderer(camera.renderer)
     publisher = OutputPublisher([camera], lambda topic: FakePublisher(int(topic.name in subscribed)))
     names = {id(pub): name for name, pub in publisher.publishers.items()}
@@ -111,12 +117,13 @@ def test_depth_is_rendered_only_while_someone_takes_it():
 
 @pytest.mark.parametrize("box_y", [0.0, 0.4, -0.4])
 def test_a_gazebo_red_box_is_red_where_the_projection_says(box_y):
-    messages, _ = camera_messages(world_with_red_box(1.5, box_y), {RGB_TOPIC, DEPTH_TOPIC})
+    world = world_with_red_box(1.5, box_y)
+    messages, _ = camera_messages(world, {RGB_TOPIC, DEPTH_TOPIC})
     image = np.frombuffer(messages[RGB_TOPIC].data, np.uint8).reshape(HEIGHT, WIDTH, 3)
     depth = np.frombuffer(messages[DEPTH_TOPIC].data, np.float32).reshape(HEIGHT, WIDTH)
-    intrinsics = CameraOutput(WIDTH, HEIGHT, 30.0).intrinsics
+    intrinsics = waffle_camera(world).intrinsics
     near_face_x = 1.5 - 0.15
-    u, v, expected_depth = project_point(intrinsics, WAFFLE_CAMERA_HEIGHT_M, WAFFLE_CAMERA_X_M, WAFFLE_CAMERA_Y_M,
+    u, v, expected_depth = project_point(intrinsics, WAFFLE_R200.height_m, WAFFLE_R200.x_m, WAFFLE_R200.y_m,
                                          0.0, near_face_x, box_y, 0.2)
     r, g, b = (int(c) for c in image[round(v), round(u)])
     assert r > 100 and g < 30 and b < 30, f"pixel ({u:.0f}, {v:.0f}) is {(r, g, b)}, not red"
@@ -125,7 +132,7 @@ def test_a_gazebo_red_box_is_red_where_the_projection_says(box_y):
 
 
 def test_static_tf_reaches_the_optical_frame_at_the_camera_mount():
-    joints = {child: (parent, xyz, rpy) for parent, child, xyz, rpy in WAFFLE_STATIC_TRANSFORMS}
+    joints = {child: (parent, xyz, rpy) for parent, child, xyz, rpy in WAFFLE.static_transforms}
     x = y = z = 0.0
     frame = "camera_rgb_optical_frame"
     chain = []
@@ -134,7 +141,7 @@ def test_static_tf_reaches_the_optical_frame_at_the_camera_mount():
         x, y, z, frame = x + dx, y + dy, z + dz, parent
         chain.append(parent)
     assert chain == ["camera_rgb_frame", "camera_link", "base_link", "base_footprint"]
-    assert (x, y, z) == pytest.approx((WAFFLE_CAMERA_X_M, WAFFLE_CAMERA_Y_M, WAFFLE_CAMERA_HEIGHT_M))
+    assert (x, y, z) == pytest.approx((WAFFLE_R200.x_m, WAFFLE_R200.y_m, WAFFLE_R200.height_m))
     assert joints["camera_rgb_optical_frame"][2] == (-1.57, 0.0, -1.57)
 
 
@@ -142,11 +149,11 @@ def test_depth_along_the_horizon_equals_the_lidar_style_range_of_each_columns_ra
     """In turtlebot3_world, the depth image's horizon row is the distance the LiDAR's ray caster finds along
     each column's centre ray, projected on the optical axis."""
     world = World(load_world(shipped_world_path("turtlebot3_world")), Pose2D(-2.0, -0.5, 0.3))
-    camera = CameraOutput(WIDTH, HEIGHT, 30.0)
+    camera = waffle_camera(world)
     reading = camera.read(world, world.time_s, {DEPTH_TOPIC})
     intrinsics = camera.intrinsics
     pose = world.robot.pose
-    x, y = pose.compose(WAFFLE_CAMERA_X_M, WAFFLE_CAMERA_Y_M)
+    x, y = pose.compose(WAFFLE_R200.x_m, WAFFLE_R200.y_m)
     columns = np.arange(0, WIDTH, 7)
     offsets = np.arctan((intrinsics.cx - columns) / intrinsics.fx)
     ranges = cast_rays((x, y), pose.yaw + offsets, world.obstacles(), 0.0, 5.0)

@@ -6,7 +6,7 @@ import pytest
 
 from tb3_sim.core.diff_drive import DiffDrive, validate_command
 from tb3_sim.core.errors import InvalidCommandError
-from tb3_sim.core.waffle import WAFFLE_WHEEL_RADIUS_M, WAFFLE_WHEEL_SEPARATION_M
+from tb3_sim.core.turtlebot3 import WAFFLE, WHEEL_RADIUS_M
 
 STEP_S = 0.005
 
@@ -57,7 +57,7 @@ def test_no_clamp_by_default_and_optional_clamp():
     fast.set_command(1.0, 3.0)
     run(fast, 0.0, 2.0)
     assert fast.velocity == pytest.approx((1.0, 3.0))
-    clamped = DiffDrive(clamp=True)
+    clamped = DiffDrive(limits=(WAFFLE.max_linear_mps, WAFFLE.max_angular_radps))
     clamped.set_command(1.0, 3.0)
     run(clamped, 0.0, 2.0)
     assert clamped.velocity == pytest.approx((0.26, 1.82))
@@ -69,8 +69,8 @@ def test_turning_in_place_turns_the_wheels_opposite_ways():
     run(drive, 0.0, 1.0)
     left, right = drive.wheel_angles
     assert left == pytest.approx(-right)
-    rim = WAFFLE_WHEEL_SEPARATION_M / 2.0
-    assert right > 0.0 and right == pytest.approx(rim / WAFFLE_WHEEL_RADIUS_M * 1.0, rel=0.15)
+    rim = WAFFLE.wheel_separation_m / 2.0
+    assert right > 0.0 and right == pytest.approx(rim / WHEEL_RADIUS_M * 1.0, rel=0.15)
 
 
 def test_wheel_angle_is_distance_over_radius():
@@ -78,7 +78,7 @@ def test_wheel_angle_is_distance_over_radius():
     drive.set_command(0.2, 0.0)
     drive.update(1.0 / 30.0)
     run(drive, 1.0 / 30.0, 1.0)
-    assert drive.wheel_angles == pytest.approx((0.2 / WAFFLE_WHEEL_RADIUS_M,) * 2, rel=1e-6)
+    assert drive.wheel_angles == pytest.approx((0.2 / WHEEL_RADIUS_M,) * 2, rel=1e-6)
 
 
 def test_reset_zeroes_command_speed_and_angles():

@@ -130,7 +130,7 @@ def test_delete(api, sim):
     assert (reply.success, reply.status_message) == (False, "DeleteModel: model does not exist")
 
 
-@pytest.mark.parametrize("name, reason", [("turtlebot3_waffle", "is the robot"), ("ros_symbol", "fixed world"),
+@pytest.mark.parametrize("name, reason", [("turtlebot3_waffle", "is a robot"), ("ros_symbol", "fixed world"),
                                           ("ground_plane", "fixed world")])
 def test_delete_refuses_the_robot_and_world_geometry(api, name, reason):
     reply = api.delete_model(DeleteModelRequest(name))

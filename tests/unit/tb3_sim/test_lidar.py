@@ -40,13 +40,13 @@ def test_layout_constants_are_gazebos():
     assert result.angle_increment == pytest.approx(6.28319 / 359) and result.angle_increment != 2 * math.pi / 360
     assert (result.range_min, result.range_max) == (0.12, 3.5)
     assert (result.time_increment, result.scan_time) == (0.0, 0.0)
-    assert result.frame_id == "base_scan" and result.time_s == 1.5
+    assert result.time_s == 1.5
     assert result.ranges.dtype == np.float32 and result.ranges.shape == (360,)
     assert beam_angles()[-1] == pytest.approx(6.28319)
 
 
 def test_nothing_hit_is_inf():
-    result = Lidar().read(World(WorldDescription("empty")), 0.0)
+    result = Lidar().read(world := World(WorldDescription("empty")), world.robot, 0.0)
     assert np.all(np.isposinf(result.ranges))
 
 
@@ -70,7 +70,7 @@ def test_beam_directions_index_0_ahead_and_ccw(index, approx_deg):
 
 def test_left_and_right_in_the_robot_frame():
     world = World(WorldDescription("w", "w", (Circle((-SCAN_OFFSET_M, 1.0), 0.1), Circle((-SCAN_OFFSET_M, -2.0), 0.1))))
-    ranges = Lidar().read(world, world.time_s).ranges
+    ranges = Lidar().read(world, world.robot, world.time_s).ranges
     assert ranges[90] == pytest.approx(0.9, abs=THREE_SIGMA_M)
     assert ranges[270] == pytest.approx(1.9, abs=0.01 + THREE_SIGMA_M)
     assert np.isposinf(ranges[0]) and np.isposinf(ranges[180])
@@ -78,7 +78,7 @@ def test_left_and_right_in_the_robot_frame():
 
 def test_distance_to_a_wall_equals_the_analytic_value():
     world = World(wall_world(2.0))
-    ranges = Lidar().read(world, world.time_s).ranges.astype(float)
+    ranges = Lidar().read(world, world.robot, world.time_s).ranges.astype(float)
     angles = beam_angles()
     expected = (2.0 + SCAN_OFFSET_M) / np.cos(angles)
     in_range = (np.cos(angles) > 0) & (expected < LIDAR_RANGE_MAX_M - THREE_SIGMA_M)
@@ -110,7 +110,7 @@ def test_distance_to_a_rotated_box_equals_the_analytic_value():
     center, yaw, size = (1.5, 0.1), 0.3, (0.4, 0.6)
     world = World(WorldDescription("arena"), robot_pose=Pose2D(0.0, 0.0, 0.0))
     world.spawn_model(ModelSpec("box", Box(*size, 0.5), Pose2D(*center, yaw)))
-    ranges = Lidar().read(world, world.time_s).ranges
+    ranges = Lidar().read(world, world.robot, world.time_s).ranges
     origin = (-SCAN_OFFSET_M, 0.0)
     checked = 0
     for index, angle in enumerate(beam_angles()):
@@ -149,7 +149,7 @@ def test_same_seed_same_scans_different_seed_different():
         out = []
         for _ in range(3):
             world.run(0.2)
-            out.append(lidar.read(world, world.time_s).ranges)
+            out.append(lidar.read(world, world.robot, world.time_s).ranges)
         return out
 
     first, again, other = scans(7), scans(7), scans(8)
@@ -160,12 +160,13 @@ def test_same_seed_same_scans_different_seed_different():
 def test_objects_lower_than_the_scan_plane_are_not_seen():
     world = World(WorldDescription("empty"))
     world.spawn_model(ModelSpec("low", Box(0.3, 0.3, 0.1), Pose2D(1.0, 0.0, 0.0)))
-    assert np.isposinf(Lidar().read(world, world.time_s).ranges[0])
+    assert np.isposinf(Lidar().read(world, world.robot, world.time_s).ranges[0])
     world.spawn_model(ModelSpec("tall", Box(0.3, 0.3, 0.2), Pose2D(2.0, 0.0, 0.0)))
-    assert Lidar().read(world, world.time_s).ranges[0] == pytest.approx(2.0 - 0.15 + SCAN_OFFSET_M, abs=THREE_SIGMA_M)
+    ranges = Lidar().read(world, world.robot, world.time_s).ranges
+    assert ranges[0] == pytest.approx(2.0 - 0.15 + SCAN_OFFSET_M, abs=THREE_SIGMA_M)
     seeing = World(WorldDescription("empty"))
     seeing.spawn_model(ModelSpec("low", Box(0.3, 0.3, 0.1), Pose2D(1.0, 0.0, 0.0)))
-    seen = Lidar(sees_low_objects=True).read(seeing, 0.0).ranges[0]
+    seen = Lidar(sees_low_objects=True).read(seeing, seeing.robot, 0.0).ranges[0]
     assert seen == pytest.approx(1.0 - 0.15 + SCAN_OFFSET_M, abs=THREE_SIGMA_M)
 
 
@@ -173,7 +174,7 @@ def test_scan_follows_a_moved_model():
     world = World(WorldDescription("empty"))
     world.spawn_model(ModelSpec("can", Box(0.2, 0.2, 0.5), Pose2D(1.0, 0.0, 0.0)))
     world.set_model_state("can", Pose2D(0.0, 1.0, 0.0))
-    ranges = Lidar().read(world, world.time_s).ranges
+    ranges = Lidar().read(world, world.robot, world.time_s).ranges
     assert np.isposinf(ranges[0]) and np.isfinite(ranges[90])
 
 

@@ -5,24 +5,27 @@ from collections import Counter
 import pytest
 
 from tb3_sim.core.geometry import Pose2D
+from tb3_sim.core.turtlebot3 import BURGER, WAFFLE_PI
 from tb3_sim.core.world import World
 from tb3_sim.core.world_file import load_world, shipped_world_path
 from tb3_sim.ros.config import SimConfig
-from tb3_sim.ros.outputs import Output, OutputPublisher, registered_outputs
+from tb3_sim.ros.outputs import Output, OutputPublisher, robot_outputs, world_outputs
 from tb3_sim.ros.outputs.clock import ClockOutput
 from tb3_sim.ros.outputs.scan import ScanOutput
+from tb3_sim.ros.robot_naming import RobotNaming
 
-TOPIC_KEYS = {"/clock": "clock", "odom": "odom", "/tf": "tf", "joint_states": "joint_states", "scan": "scan",
-              "imu": "imu", "~model_states": "model_states", "~world_markers": "world_markers",
+TOPIC_KEYS = {"/clock": "clock", "/odom": "odom", "/tf": "tf", "/joint_states": "joint_states", "/scan": "scan",
+              "/imu": "imu", "~model_states": "model_states", "~world_markers": "world_markers",
               "/camera/rgb/image_raw": "rgb", "/camera/rgb/camera_info": "rgb_info",
               "/camera/rgb/image_raw/compressed": "compressed", "/camera/depth/image_raw": "depth",
               "/camera/depth/camera_info": "depth_info"}
 SMALL_CAMERA = {"camera_width": 64, "camera_height": 48}
+ROOT = RobotNaming("/")
 
 
 class FakePublisher:
     def __init__(self, topic, subscribers):
-        self.name = TOPIC_KEYS[topic.name]
+        self.name = TOPIC_KEYS.get(topic.name, topic.name)
         self.topic = topic
         self.subscribers = subscribers
 
@@ -30,11 +33,14 @@ class FakePublisher:
         return self.subscribers
 
 
-def outputs(subscribed=True, **config):
-    """Every registered output with fake publishers (a 64x48 camera unless `config` says otherwise)."""
-    config = {**SMALL_CAMERA, **config}
-    return OutputPublisher(registered_outputs(SimConfig(world_path=None, **config)),
-                           lambda topic: FakePublisher(topic, int(subscribed)))
+def outputs(world, subscribed=True, naming=ROOT, **config):
+    """The world's outputs and every robot's, all named by `naming`, with fake publishers (a 64x48 camera unless
+    `config` says otherwise)."""
+    config = SimConfig(world_path=None, **{**SMALL_CAMERA, **config})
+    publisher = OutputPublisher(world_outputs(), lambda topic: FakePublisher(topic, int(subscribed)))
+    for index, robot in enumerate(world.robots()):
+        publisher.add(robot_outputs(config, robot, naming, index), world.time_s)
+    return publisher
 
 
 @pytest.fixture
@@ -54,32 +60,61 @@ def run(world, publisher, seconds):
 
 
 def test_rates_over_two_sim_seconds(world):
-    counts, _ = run(world, outputs(), 2.0)
+    counts, _ = run(world, outputs(world), 2.0)
     camera = {key: 60 for key in ("rgb", "rgb_info", "compressed", "depth", "depth_info")}
     assert counts == {"clock": 400, "odom": 60, "tf": 60, "joint_states": 60, "scan": 10, "imu": 200,
                       "model_states": 200, "world_markers": 4, **camera}
 
 
 def test_nothing_is_built_without_subscribers_and_lazy_outputs_are_not_read(world):
-    publisher = outputs(subscribed=False)
+    publisher = outputs(world, subscribed=False)
     counts, _ = run(world, publisher, 1.0)
     assert counts == {}
     assert publisher.output(ScanOutput).latest is None
 
 
-def test_registry_order_clock_first_and_every_output_declares_topics_and_rate():
-    registered = registered_outputs(SimConfig(world_path=None, **SMALL_CAMERA))
+def test_registry_order_clock_first_and_every_output_declares_topics_and_rate(world):
+    registered = outputs(world).outputs
     assert isinstance(registered[0], ClockOutput)
     assert [type(o).__name__ for o in registered] == [
-        "ClockOutput", "OdometryOutput", "ScanOutput", "ImuOutput", "ModelStatesOutput", "WorldMarkersOutput",
+        "ClockOutput", "ModelStatesOutput", "WorldMarkersOutput", "OdometryOutput", "ScanOutput", "ImuOutput",
         "CameraOutput"]
     for output in registered:
         assert isinstance(output, Output) and output.topics and output.rate_hz >= 0
 
 
+def test_without_camera_parameters_each_camera_keeps_its_models_size_and_rate(world):
+    camera = outputs(world, camera_width=None, camera_height=None).outputs[-1]
+    assert (camera.intrinsics.width, camera.intrinsics.height, camera.rate_hz) == (1920, 1080, 30.0)
+    assert camera.intrinsics.hfov_rad == 1.3439
+
+
+def test_a_burger_has_no_camera_and_a_waffle_pi_camera_no_depth():
+    burger = World(load_world(shipped_world_path("empty")), robot_name="turtlebot3_burger", robot_model=BURGER)
+    assert "CameraOutput" not in [type(o).__name__ for o in outputs(burger).outputs]
+    waffle_pi = World(load_world(shipped_world_path("empty")), robot_name="turtlebot3_waffle_pi",
+                      robot_model=WAFFLE_PI)
+    waffle_pi_outputs = outputs(waffle_pi, camera_width=None, camera_height=None).outputs
+    assert (waffle_pi_outputs[-1].intrinsics.width, waffle_pi_outputs[-1].intrinsics.height) == (640, 480)
+    topics = {topic.name for output in waffle_pi_outputs for topic in output.topics}
+    assert {"/camera/rgb/image_raw", "/camera/rgb/camera_info", "/camera/rgb/image_raw/compressed"} <= topics
+    assert not {t for t in topics if "depth" in t}
+
+
+def test_a_namespaced_robot_publishes_in_its_namespace_with_prefixed_frames(world):
+    _, last = run(world, outputs(world, naming=RobotNaming("/tb3_1/", "tb3_1")), 0.5)
+    assert (last["/tb3_1/odom"].header.frame_id, last["/tb3_1/odom"].child_frame_id) == (
+        "tb3_1/odom", "tb3_1/base_footprint")
+    assert [(t.header.frame_id, t.child_frame_id) for t in last["tf"].transforms] == [
+        ("tb3_1/odom", "tb3_1/base_footprint")]
+    assert last["/tb3_1/scan"].header.frame_id == "tb3_1/base_scan"
+    assert last["/tb3_1/imu"].header.frame_id == "tb3_1/base_footprint"
+    assert last["/tb3_1/camera/rgb/camera_info"].header.frame_id == "tb3_1/camera_rgb_optical_frame"
+
+
 def test_messages_carry_the_world_state_and_frames(world):
     world.robot.set_command(0.2, 0.0)
-    publisher = outputs()
+    publisher = outputs(world)
     _, last = run(world, publisher, 1.0)
     assert last["clock"].clock.to_sec() == pytest.approx(1.0)
     assert last["odom"].twist.twist.linear.x == pytest.approx(0.2)
@@ -92,13 +127,13 @@ def test_messages_carry_the_world_state_and_frames(world):
 
 
 def test_latched_world_markers_go_out_at_start_without_subscribers(world):
-    pairs = outputs(subscribed=False).latched(world)
+    pairs = outputs(world, subscribed=False).latched(world)
     assert [fake.name for fake, _ in pairs] == ["world_markers"]
     assert len(pairs[0][1].markers) > 1
 
 
 def test_reset_restarts_every_schedule_and_the_noise_stream(world):
-    publisher = outputs(seed=7)
+    publisher = outputs(world, seed=7)
     _, first = run(world, publisher, 1.0)
     world.reset_simulation()
     publisher.reset(world.time_s)
@@ -109,7 +144,7 @@ def test_reset_restarts_every_schedule_and_the_noise_stream(world):
 
 
 def test_forget_motion_hides_a_teleport_from_the_imu(world):
-    publisher = outputs()
+    publisher = outputs(world)
     run(world, publisher, 0.1)
     world.set_model_state("turtlebot3_waffle", Pose2D(0.5, 0.5, 0.0))
     world.robot.body.linearVelocity = (1.0, 0.0)
@@ -119,7 +154,7 @@ def test_forget_motion_hides_a_teleport_from_the_imu(world):
 
 
 def test_view_scan_reuses_a_fresh_scan_and_replaces_a_stale_one(world):
-    scan = outputs().output(ScanOutput)
+    scan = outputs(world).output(ScanOutput)
     publisher = OutputPublisher([scan], lambda topic: FakePublisher(topic, 1))
     run(world, publisher, 0.2)
     assert scan.for_view(world) is scan.latest
@@ -140,7 +175,7 @@ def frames_of(message):
 
 
 def test_every_message_is_in_the_frames_its_output_declares(world):
-    publisher = outputs()
+    publisher = outputs(world)
     declared = {topic.name: set(output.frame_ids) for output in publisher.outputs for topic in output.topics}
     for _ in range(round(0.5 / world.step_s)):
         world.step()

@@ -9,7 +9,7 @@ from tb3_sim.core.world import World
 from tb3_sim.core.world_file import ModelSpec, load_world, shipped_world_path
 from tb3_sim.view import renderer
 from tb3_sim.view.renderer import View, render_image, save_png
-from tb3_sim.view.scene import Trail, scene_of
+from tb3_sim.view.scene import Trail, Trails, scene_of
 
 
 @pytest.fixture
@@ -51,9 +51,9 @@ def test_trail_drops_the_oldest_points():
 
 
 def test_scene_copies_models_robot_and_scan_hits(world):
-    scene = scene_of(world, Trail(), Lidar().read(world, world.time_s))
+    scene = scene_of(world, Trails(), Lidar().read(world, world.robot, world.time_s))
     assert [m.name for m in scene.models] == ["box1"]
-    assert scene.robot_pose == pytest.approx(Pose2D(-2.0, -0.5, 0.0))
+    assert [(r.name, r.pose) for r in scene.robots] == [("turtlebot3_waffle", pytest.approx(Pose2D(-2.0, -0.5, 0.0)))]
     hits = scene.scan_hits()
     assert len(hits) > 100
     ahead = hits[abs(hits[:, 1] + 0.5) < 0.01]
@@ -61,7 +61,7 @@ def test_scene_copies_models_robot_and_scan_hits(world):
 
 
 def test_view_fits_the_whole_arena():
-    scene = scene_of(World(load_world(shipped_world_path("turtlebot3_world")), Pose2D(-2.0, -0.5, 0.0)), Trail())
+    scene = scene_of(World(load_world(shipped_world_path("turtlebot3_world")), Pose2D(-2.0, -0.5, 0.0)), Trails())
     view = View.fit(scene, 800, 600)
     for x, y in ((-3.3, 0.0), (4.67, 0.0), (0.0, 3.4), (0.0, -3.4)):
         column, row = view.to_pixel(x, y)
@@ -69,9 +69,9 @@ def test_view_fits_the_whole_arena():
 
 
 def test_pixels_show_robot_walls_models_and_rays(world):
-    trail = Trail()
-    trail.add(-2.0, -0.5)
-    image, view = render_image(scene_of(world, trail, Lidar().read(world, world.time_s)), 800, 800)
+    trails = Trails()
+    trails.add(world.robots())
+    image, view = render_image(scene_of(world, trails, Lidar().read(world, world.robot, world.time_s)), 800, 800)
     assert colour_at(image, view, -2.05, -0.5) == renderer.ROBOT_FILL.rgb()
     assert colour_at(image, view, 0.0, 0.0) == renderer.STATIC_FILL.rgb()
     assert colour_at(image, view, -1.0, -0.4) == renderer.MODEL_FILL.rgb()
@@ -82,7 +82,7 @@ def test_pixels_show_robot_walls_models_and_rays(world):
 
 def test_save_png_writes_a_png(world, tmp_path):
     path = tmp_path / "view.png"
-    save_png(scene_of(world, Trail()), path, 200, 150)
+    save_png(scene_of(world, Trails()), path, 200, 150)
     image = QImage(str(path))
     assert (image.width(), image.height()) == (200, 150)
     assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
@@ -90,4 +90,4 @@ def test_save_png_writes_a_png(world, tmp_path):
 
 def test_unwritable_path_is_an_oserror(world, tmp_path):
     with pytest.raises(OSError, match="cannot write a PNG to"):
-        save_png(scene_of(world, Trail()), tmp_path / "missing" / "view.png")
+        save_png(scene_of(world, Trails()), tmp_path / "missing" / "view.png")

@@ -7,7 +7,7 @@ from geometry_msgs.msg import Pose
 
 from tb3_sim.core.geometry import Pose2D, Twist2D
 from tb3_sim.core.lidar import ScanResult
-from tb3_sim.core.waffle import WAFFLE_STATIC_TRANSFORMS
+from tb3_sim.core.turtlebot3 import WAFFLE
 from tb3_sim.ros import messages
 
 
@@ -35,9 +35,9 @@ def test_odometry_twist_is_the_given_body_twist():
 
 
 def test_static_tf_has_one_transform_per_fixed_joint():
-    message = messages.static_tf_message(0.0, WAFFLE_STATIC_TRANSFORMS)
+    message = messages.static_tf_message(0.0, WAFFLE.static_transforms)
     assert [(t.header.frame_id, t.child_frame_id) for t in message.transforms] == [
-        (parent, child) for parent, child, _, _ in WAFFLE_STATIC_TRANSFORMS]
+        (parent, child) for parent, child, _, _ in WAFFLE.static_transforms]
 
 
 def test_scan_message_keeps_inf_and_fills_zero_intensities():

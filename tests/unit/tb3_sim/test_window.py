@@ -15,7 +15,7 @@ from tb3_sim.core.world import World  # noqa: E402
 from tb3_sim.core.world_file import load_world, shipped_world_path  # noqa: E402
 from tb3_sim.view.box_tool import BoxTool  # noqa: E402
 from tb3_sim.view.renderer import ROBOT_FILL  # noqa: E402
-from tb3_sim.view.scene import Trail, scene_of  # noqa: E402
+from tb3_sim.view.scene import Trails, scene_of  # noqa: E402
 from tb3_sim.view.window import SimWindow  # noqa: E402
 
 
@@ -28,7 +28,7 @@ def app():
 def window(app, fake_sim):
     world = World(load_world(shipped_world_path("empty")), Pose2D(0.0, 0.0, 0.0))
     closed = []
-    window = SimWindow(lambda: scene_of(world, Trail()), BoxTool(fake_sim(world)), on_close=lambda: closed.append(1),
+    window = SimWindow(lambda: scene_of(world, Trails()), BoxTool(fake_sim(world)), on_close=lambda: closed.append(1),
                        log=lambda text: None)
     window.resize(400, 400)
     window.show()
@@ -39,7 +39,7 @@ def window(app, fake_sim):
 
 
 def pixel_of(window, x, y):
-    view = window.view_for(scene_of(window.world, Trail()))
+    view = window.view_for(scene_of(window.world, Trails()))
     column, row = view.to_pixel(x, y)
     return QPoint(int(column), int(row))
 

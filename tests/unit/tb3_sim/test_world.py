@@ -8,7 +8,7 @@ from tb3_sim.core.errors import DuplicateModelError, OverlapError, ProtectedMode
 from tb3_sim.core.geometry import Pose2D, Twist2D
 from tb3_sim.core.lidar import Lidar
 from tb3_sim.core.shapes import Box, Cylinder, Polygon, Segment
-from tb3_sim.core.waffle import WAFFLE_BODY_X_MAX_M
+from tb3_sim.core.turtlebot3 import WAFFLE
 from tb3_sim.core.world import PHYSICS_STEP_S, World
 from tb3_sim.core.world_file import ModelSpec, WorldDescription, load_world, shipped_world_path
 
@@ -90,9 +90,9 @@ def test_robot_driven_into_a_wall_stops_at_it_and_never_passes(speed, wall):
     furthest = -math.inf
     for _ in range(round((1.0 / speed + 1.0) / PHYSICS_STEP_S)):
         world.step()
-        furthest = max(furthest, world.robot.pose.x + WAFFLE_BODY_X_MAX_M)
+        furthest = max(furthest, world.robot.pose.x + WAFFLE.body_x_max_m)
     assert furthest <= wall_x + 0.005
-    front = world.robot.pose.x + WAFFLE_BODY_X_MAX_M
+    front = world.robot.pose.x + WAFFLE.body_x_max_m
     assert wall_x - 0.03 <= front <= wall_x
     assert abs(world.robot.twist_body.vx) < 0.05
 
@@ -116,7 +116,7 @@ def test_ramped_drive_into_a_wall_from_a_long_run_up_never_passes():
     furthest = -math.inf
     for _ in range(round(6.0 / PHYSICS_STEP_S)):
         world.step()
-        furthest = max(furthest, world.robot.pose.x + WAFFLE_BODY_X_MAX_M)
+        furthest = max(furthest, world.robot.pose.x + WAFFLE.body_x_max_m)
     assert 0.97 <= furthest <= 1.005
 
 
@@ -126,7 +126,7 @@ def test_static_model_is_not_pushed():
     world.robot.set_command(0.26, 0.0)
     world.run(4.0)
     assert world.get_model_state("pillar").pose == pytest.approx((0.5, 0.0, 0.0))
-    assert world.robot.pose.x + WAFFLE_BODY_X_MAX_M <= 0.4 + 1e-3
+    assert world.robot.pose.x + WAFFLE.body_x_max_m <= 0.4 + 1e-3
 
 
 def test_model_names_in_gazebo_order():
@@ -221,7 +221,7 @@ def test_reset_simulation_rewinds_time_and_repeats_the_run():
     world, lidar = World(load_world(shipped_world_path("approach_arena"))), Lidar(seed=4)
     world.robot.set_command(0.2, 0.4)
     world.run(1.0)
-    first_pose, first_scan = world.robot.pose, lidar.read(world, world.time_s).ranges
+    first_pose, first_scan = world.robot.pose, lidar.read(world, world.robot, world.time_s).ranges
     drive_and_disturb(world)
     world.reset_simulation()
     assert world.time_s == 0.0
@@ -232,12 +232,12 @@ def test_reset_simulation_rewinds_time_and_repeats_the_run():
     world.robot.set_command(0.2, 0.4)
     world.run(1.0)
     assert world.robot.pose == pytest.approx(first_pose, abs=1e-4)
-    assert lidar.read(world, world.time_s).ranges == pytest.approx(first_scan, abs=1e-3)
+    assert lidar.read(world, world.robot, world.time_s).ranges == pytest.approx(first_scan, abs=1e-3)
 
 
 def test_robot_start_in_turtlebot3_world_is_clear_and_sees_the_wall_behind():
     world = World(load_world(shipped_world_path("turtlebot3_world")), Pose2D(-2.0, -0.5, 0.0))
-    ranges = Lidar().read(world, world.time_s).ranges
+    ranges = Lidar().read(world, world.robot, world.time_s).ranges
     inner_wall_x_at_y = -2.93 + 0.5 / math.tan(math.radians(60))
     assert ranges[180] == pytest.approx(-2.064 - inner_wall_x_at_y, abs=0.05)
     world.robot.set_command(0.26, 0.0)

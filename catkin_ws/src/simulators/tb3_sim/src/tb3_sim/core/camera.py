@@ -29,19 +29,11 @@ from typing import NamedTuple
 
 import numpy as np
 
-# The Waffle's R200 as the Gazebo model declares it.
-R200_WIDTH_PX = 1920
-R200_HEIGHT_PX = 1080
-R200_HFOV_RAD = 1.3439
-R200_UPDATE_RATE_HZ = 30.0
-R200_CLIP_NEAR_M = 0.03
-R200_CLIP_FAR_M = 100.0
-R200_FRAME_ID = "camera_rgb_optical_frame"
-# The xacro's plugin block holds <hackBaseline> twice, 0.07 then 0; sdformat's Get() returns the first element.
-R200_HACK_BASELINE_M = 0.07
-# gazebo_ros_openni_kinect publishes depth only inside (cutoff, cutoff_max); NaN elsewhere.
-R200_DEPTH_CUTOFF_MIN_M = 0.4
-R200_DEPTH_CUTOFF_MAX_M = 5.0
+# The clip planes of both TurtleBot3 cameras (the sensors' values: core.turtlebot3 lists the rest). The Waffle's
+# xacro holds <hackBaseline> twice, 0.07 then 0; sdformat's Get() returns the first element. Its
+# gazebo_ros_openni_kinect publishes depth only inside (cutoff, cutoff_max) = (0.4, 5.0) m; NaN elsewhere.
+CLIP_NEAR_M = 0.03
+CLIP_FAR_M = 100.0
 
 DISTORTION_MODEL = "plumb_bob"
 ZERO_DISTORTION = (0.0, 0.0, 0.0, 0.0, 0.0)
@@ -87,6 +79,11 @@ class CameraIntrinsics:
         if not 0.0 < self.hfov_rad < math.pi:
             raise ValueError(f"horizontal_fov must be in (0, pi) rad, got {self.hfov_rad}")
 
+    @classmethod
+    def of(cls, spec, width_px=None, height_px=None):
+        """The intrinsics of a turtlebot3.CameraSpec, at another image size if one is given."""
+        return cls(width_px or spec.width_px, height_px or spec.height_px, spec.hfov_rad, spec.hack_baseline_m)
+
     @property
     def fx(self):
         """Focal length in pixels: width / (2 tan(hfov / 2))."""
@@ -116,9 +113,6 @@ class CameraIntrinsics:
         return (self.fx, 0.0, self.cx, -self.fx * self.hack_baseline_m,
                 0.0, self.fy, self.cy, 0.0,
                 0.0, 0.0, 1.0, 0.0)
-
-
-WAFFLE_R200_INTRINSICS = CameraIntrinsics(R200_WIDTH_PX, R200_HEIGHT_PX, R200_HFOV_RAD, R200_HACK_BASELINE_M)
 
 
 @dataclass(frozen=True, eq=False)
@@ -244,15 +238,15 @@ class CameraRenderer:
     shading; materials.FLOOR_RGB and SKY_RGB are Gazebo's). The floor is visible up to far_clip_m; beyond it, and
     above the horizon, the sky shows. Objects nearer than near_clip_m or farther than far_clip_m (depth along
     the optical axis) are not drawn. depth_min_m, depth_max_m: the band where the depth image has values (default:
-    the clip planes; Gazebo's Waffle publishes only strictly inside R200_DEPTH_CUTOFF_MIN_M and
-    R200_DEPTH_CUTOFF_MAX_M). Walls and cylinders are shaded as described at AMBIENT_SHADE and dimmed with depth;
-    shading never changes a hue. What depends only on the camera (column rays, the floor row, the background) is
-    computed here once, and image-sized scratch buffers are reused, so an instance must not render from two
-    threads at once. The images render() returns are new arrays, safe to keep.
+    the clip planes; Gazebo's Waffle publishes only strictly inside 0.4 and 5.0 m). Walls and cylinders are
+    shaded as described at AMBIENT_SHADE and dimmed with depth; shading never changes a hue. What depends only on
+    the camera (column rays, the floor row, the background) is computed here once, and image-sized scratch buffers
+    are reused, so an instance must not render from two threads at once. The images render() returns are new
+    arrays, safe to keep.
     """
 
-    def __init__(self, intrinsics, mount_height_m, floor_rgb, sky_rgb, far_clip_m=R200_CLIP_FAR_M,
-                 near_clip_m=R200_CLIP_NEAR_M, depth_min_m=None, depth_max_m=None):
+    def __init__(self, intrinsics, mount_height_m, floor_rgb, sky_rgb, far_clip_m=CLIP_FAR_M,
+                 near_clip_m=CLIP_NEAR_M, depth_min_m=None, depth_max_m=None):
         if mount_height_m <= 0.0:
             raise ValueError(f"mount_height_m must be above the floor (> 0), got {mount_height_m}")
         if not 0.0 < near_clip_m < far_clip_m:

@@ -2,7 +2,7 @@
 
 Kept on purpose from the original (spec §3.1):
 - no command timeout: the last command is held until a new one arrives or the drive is reset;
-- no clamping to the robot's limits (optional `clamp` for exercises that want the vendor limits);
+- no clamping to the robot's limits (optional `limits` for exercises that want the vendor limits);
 - per-wheel rim-speed targets v -/+ w * separation / 2 (left, right), approached at 30 Hz (sim time) by at most
   `acceleration_mps2 * dt` per update; if either wheel is within 0.01 m/s of its target both are set directly.
 The simulator applies the resulting (v, w) to the robot body as a velocity, like flatland; the wheels slip
@@ -13,12 +13,7 @@ import math
 
 from tb3_sim.core.errors import InvalidCommandError
 from tb3_sim.core.schedule import PeriodicSchedule
-from tb3_sim.core.waffle import (
-    WAFFLE_MAX_ANGULAR_RADPS,
-    WAFFLE_MAX_LINEAR_MPS,
-    WAFFLE_WHEEL_RADIUS_M,
-    WAFFLE_WHEEL_SEPARATION_M,
-)
+from tb3_sim.core.turtlebot3 import WAFFLE, WHEEL_RADIUS_M
 
 DRIVE_UPDATE_RATE_HZ = 30.0
 WHEEL_ACCELERATION_MPS2 = 1.0
@@ -50,14 +45,15 @@ class DiffDrive:
 
     Units: m/s at the wheel rim, rad/s, rad. Call `update(now_s)` before every physics step (it acts at
     `update_rate_hz`) and `advance_wheels(dt_s)` after it; read `velocity` to drive the body.
+    `limits` (max linear m/s, max angular rad/s) clamps commands, None (Gazebo's way, the default) does not.
     """
 
-    def __init__(self, wheel_separation_m=WAFFLE_WHEEL_SEPARATION_M, wheel_radius_m=WAFFLE_WHEEL_RADIUS_M,
-                 acceleration_mps2=WHEEL_ACCELERATION_MPS2, update_rate_hz=DRIVE_UPDATE_RATE_HZ, clamp=False):
+    def __init__(self, wheel_separation_m=WAFFLE.wheel_separation_m, wheel_radius_m=WHEEL_RADIUS_M,
+                 acceleration_mps2=WHEEL_ACCELERATION_MPS2, update_rate_hz=DRIVE_UPDATE_RATE_HZ, limits=None):
         self.wheel_separation_m = wheel_separation_m
         self.wheel_radius_m = wheel_radius_m
         self.acceleration_mps2 = acceleration_mps2
-        self.clamp = clamp
+        self.limits = limits
         self._schedule = PeriodicSchedule(update_rate_hz)
         self.reset(0.0)
 
@@ -75,9 +71,10 @@ class DiffDrive:
         reason = validate_command(linear_mps, angular_radps)
         if reason is not None:
             raise InvalidCommandError(reason)
-        if self.clamp:
-            linear_mps = max(-WAFFLE_MAX_LINEAR_MPS, min(WAFFLE_MAX_LINEAR_MPS, linear_mps))
-            angular_radps = max(-WAFFLE_MAX_ANGULAR_RADPS, min(WAFFLE_MAX_ANGULAR_RADPS, angular_radps))
+        if self.limits is not None:
+            max_linear, max_angular = self.limits
+            linear_mps = max(-max_linear, min(max_linear, linear_mps))
+            angular_radps = max(-max_angular, min(max_angular, angular_radps))
         self._command = (float(linear_mps), float(angular_radps))
         half_turn = angular_radps * self.wheel_separation_m / 2.0
         self._target = [linear_mps - half_turn, linear_mps + half_turn]

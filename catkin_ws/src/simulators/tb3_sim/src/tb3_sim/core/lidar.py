@@ -7,16 +7,15 @@ Gazebo conventions kept on purpose:
 - each ray starts 0.12 m from the scan origin: anything closer is not seen and the beam reports what lies
   behind it; a beam with no hit, or a hit at or beyond 3.5 m, reports +inf (never range_max, never 0);
 - Gaussian noise (sigma 0.01 m) only on finite readings, then clamped to [0.12, 3.5];
-- only the horizontal plane at 0.132 m is scanned: objects lower than that are not seen (unless
-  `sees_low_objects`, an option Gazebo does not have).
+- only the horizontal plane of base_scan is scanned (0.132 m above the floor on a Waffle, 0.182 m on a Burger):
+  objects lower than that are not seen (unless `sees_low_objects`, an option Gazebo does not have); other robots
+  are seen where their bodies or LiDAR housings reach that plane, the robot's own body never.
 The noise comes from a seeded numpy Generator, so the same seed and the same motion give identical scans.
 """
 
 from dataclasses import dataclass
 
 import numpy as np
-
-from tb3_sim.core.waffle import WAFFLE_SCAN_HEIGHT_M
 
 LIDAR_SAMPLES = 360
 LIDAR_ANGLE_MIN_RAD = 0.0
@@ -26,11 +25,10 @@ LIDAR_RANGE_MIN_M = 0.12
 LIDAR_RANGE_MAX_M = 3.5
 LIDAR_NOISE_STDDEV_M = 0.01
 LIDAR_UPDATE_RATE_HZ = 5.0
-LIDAR_FRAME_ID = "base_scan"
 
 @dataclass(frozen=True)
 class ScanResult:
-    """One sweep, with every field a sensor_msgs/LaserScan needs besides the header stamp source.
+    """One sweep, with every field a sensor_msgs/LaserScan needs but the header's frame (the node names it).
 
     `ranges` is a float32 array of LIDAR_SAMPLES distances in metres from the base_scan origin (+inf where
     nothing is seen); `time_s` is the simulated time of the measurement. time_increment and scan_time are 0,
@@ -39,7 +37,6 @@ class ScanResult:
 
     ranges: np.ndarray
     time_s: float
-    frame_id: str = LIDAR_FRAME_ID
     angle_min: float = LIDAR_ANGLE_MIN_RAD
     angle_max: float = LIDAR_ANGLE_MAX_RAD
     angle_increment: float = LIDAR_ANGLE_INCREMENT_RAD
@@ -109,10 +106,10 @@ class Lidar:
         """Restart the noise stream from the seed, so a rerun after reset_simulation repeats exactly."""
         self._rng = np.random.default_rng(self.seed)
 
-    def read(self, world, now_s):
-        """A sweep from the robot's base_scan in `world` at `now_s` (a ScanResult)."""
-        reaching_m = 0.0 if self.sees_low_objects else WAFFLE_SCAN_HEIGHT_M
-        return self.scan(world.robot.scan_pose(), world.obstacles(reaching_m), now_s)
+    def read(self, world, robot, now_s):
+        """A sweep from `robot`'s base_scan in `world` at `now_s` (a ScanResult)."""
+        reaching_m = 0.0 if self.sees_low_objects else robot.model.scan_height_m
+        return self.scan(robot.scan_pose(), world.obstacles(reaching_m, excluding=robot), now_s)
 
     def scan(self, origin, obstacles, time_s):
         """Sweep from `origin` (Pose2D of base_scan in the world) against `obstacles`; return a ScanResult.

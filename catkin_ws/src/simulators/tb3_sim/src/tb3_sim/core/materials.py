@@ -143,6 +143,9 @@ def _hex_rgb(text):
 DEFAULT_MODEL_RGB = material_rgb("Gazebo/Grey")
 # Walls saved by Gazebo's building editor use Gazebo/Grey.
 DEFAULT_WALL_RGB = material_rgb("Gazebo/Grey")
+# Another TurtleBot3 as a camera sees it: the dark grey plates of its body (Gazebo/DarkGrey, the colour the
+# turtlebot3 gazebo.xacro gives base_link).
+ROBOT_RGB = material_rgb("Gazebo/DarkGrey")
 # SDF <scene><background> default ".7 .7 .7 1" (sdformat scene.sdf): a plain light grey, not a blue sky.
 SKY_RGB = rgb_from_unit((0.7, 0.7, 0.7))
 

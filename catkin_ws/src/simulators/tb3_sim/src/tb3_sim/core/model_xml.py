@@ -8,6 +8,8 @@ Supported, which is what course code and the Gazebo box tool send:
   <cylinder radius length/> | <sphere radius/></geometry></collision> and optional <inertial><mass value/>;
   <gazebo><static>true</static></gazebo> makes the model static.
 A model must have exactly one collision shape. Units: metres, radians, kilograms.
+- A TurtleBot3: a URDF whose robot name is turtlebot3_burger, turtlebot3_waffle or turtlebot3_waffle_pi (what
+  xacro makes of turtlebot3_description's files) is read as that robot, a `TurtleBot3Spec`, whatever its links.
 
 Colour (what the camera sees), from the first that is given: SDF <visual><material> with <diffuse>, else
 <ambient> (r g b [a], each in [0, 1]), else <script><name>Gazebo/Red</name>; URDF <gazebo><material>Gazebo/Red
@@ -25,12 +27,13 @@ MAX_SHAPE_SIZE_M] (1 mm to 100 m) and masses within [MIN_MASS_KG, MAX_MASS_KG]; 
 
 import math
 import xml.etree.ElementTree as ElementTree
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 from tb3_sim.core.errors import ModelXmlError, NotModelXmlError, NotUrdfError
 from tb3_sim.core.geometry import Pose2D, wrap_angle
 from tb3_sim.core.materials import material_rgb, rgba_text_to_rgb
 from tb3_sim.core.shapes import Box, Cylinder
+from tb3_sim.core.turtlebot3 import TurtleBot3Model, model_of_robot_name
 from tb3_sim.core.world_file import DEFAULT_MODEL_MASS_KG, ModelSpec
 
 # Sanity limits: Box2D works in float32 and needs non-degenerate shapes; anything outside is refused.
@@ -45,6 +48,16 @@ TILT_TOLERANCE_RAD = 1e-6
 TRUE_WORDS = ("true", "1")
 
 
+@dataclass(frozen=True)
+class TurtleBot3Spec:
+    """A TurtleBot3 to spawn: its name (the URDF's robot name; the caller may override it), its `model` and its
+    pose (the URDF's root has none: the origin)."""
+
+    name: str
+    model: TurtleBot3Model
+    pose: Pose2D = Pose2D()
+
+
 def compose(parent, child):
     """The pose `child`, given in the frame `parent`, expressed in the parent's own frame (2D)."""
     x, y = parent.compose(child.x, child.y)
@@ -52,7 +65,8 @@ def compose(parent, child):
 
 
 def parse_model_xml(text, urdf_only=False):
-    """The ModelSpec described by SDF or URDF `text`, at its pose in the XML (compose with the spawn pose).
+    """The ModelSpec (or TurtleBot3Spec) described by SDF or URDF `text`, at its pose in the XML (compose with
+    the spawn pose).
 
     The name is the XML's model or robot name (may be empty; the caller may override it). Raises
     NotModelXmlError (not XML, or neither SDF nor URDF), NotUrdfError (`urdf_only` and not URDF), or
@@ -89,6 +103,9 @@ def _parse_sdf(root):
 
 
 def _parse_urdf(root):
+    turtlebot3 = model_of_robot_name(root.get("name", ""))
+    if turtlebot3 is not None:
+        return TurtleBot3Spec(root.get("name"), turtlebot3)
     found = []
     for link in root.findall("link"):
         mass_element = link.find("inertial/mass")

@@ -10,8 +10,9 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
-from tb3_sim.core.materials import DEFAULT_MODEL_RGB, DEFAULT_WALL_RGB
+from tb3_sim.core.materials import DEFAULT_MODEL_RGB, DEFAULT_WALL_RGB, ROBOT_RGB
 from tb3_sim.core.shapes import DEFAULT_STATIC_HEIGHT_M, Box, Circle, Cylinder, Polygon, Segment
+from tb3_sim.core.turtlebot3 import LDS_RADIUS_M, LDS_TOP_ABOVE_SCAN_M, LDS_X_OFFSET_M
 
 
 @dataclass(frozen=True)
@@ -91,3 +92,19 @@ def model_obstacles(shape, pose, rgb=None):
     if isinstance(shape, Cylinder):
         return Obstacles.of(circles=[(pose.x, pose.y, shape.radius)], **look)
     raise TypeError(f"not a model shape: {shape!r}")
+
+
+def robot_obstacles(model, pose, reaching_m=0.0):
+    """Obstacles for a TurtleBot3 of `model` (a turtlebot3.TurtleBot3Model) at `pose`: its base box and its LiDAR
+    housing, each only if its top reaches `reaching_m` (a Waffle's LiDAR plane passes above another Waffle's base
+    and meets its LiDAR housing)."""
+    parts = [Obstacles.empty()]
+    if model.body_top_m >= reaching_m:
+        base = model.footprint()[0]
+        parts.append(Obstacles.of(edges=_ccw_edges([pose.compose(x, y) for x, y in base]), top=model.body_top_m,
+                                  rgb=ROBOT_RGB))
+    lds_top = model.scan_height_m + LDS_TOP_ABOVE_SCAN_M
+    if lds_top >= reaching_m:
+        x, y = pose.compose(model.scan_x_m + LDS_X_OFFSET_M, 0.0)
+        parts.append(Obstacles.of(circles=[(x, y, LDS_RADIUS_M)], top=lds_top, rgb=ROBOT_RGB))
+    return sum(parts[1:], parts[0])

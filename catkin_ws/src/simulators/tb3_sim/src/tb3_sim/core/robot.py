@@ -1,11 +1,11 @@
-"""The TurtleBot3 Waffle as a Box2D body driven by the Gazebo-style differential drive."""
+"""A TurtleBot3 (any model of core.turtlebot3) as a Box2D body driven by the Gazebo-style differential drive."""
 
 import math
 
 from tb3_sim.core.bodies import body_pose, body_twist_world, set_body_velocity, teleport
 from tb3_sim.core.diff_drive import DiffDrive
 from tb3_sim.core.geometry import Pose2D, Twist2D
-from tb3_sim.core.waffle import WAFFLE_MASS_KG, WAFFLE_SCAN_OFFSET_X_M, waffle_footprint
+from tb3_sim.core.turtlebot3 import DEFAULT_MODEL
 
 # Contact friction of the robot's shapes with walls and boxes (Gazebo gives the wheels mu 0.1).
 ROBOT_CONTACT_FRICTION = 0.1
@@ -18,18 +18,21 @@ def _polygon_area(points):
 class Robot:
     """The robot: a dynamic, bullet (continuous-collision) body whose velocity the drive sets each step.
 
-    The body's origin is base_footprint; its collision shapes are the Waffle's base box and wheels
-    (`waffle.waffle_footprint`) with a total mass of WAFFLE_MASS_KG. Because the velocity is overwritten
-    before every physics step, the contact solver is what stops the robot at walls and what lets it push
-    dynamic models, as in flatland's diff drive.
+    The body's origin is base_footprint; its collision shapes are the model's base box and wheels
+    (`TurtleBot3Model.footprint`) with the model's total mass. The drive uses the model's wheel separation and
+    radius; `clamp` limits commands to the model's vendor limits (Gazebo does not). Because the velocity is
+    overwritten before every physics step, the contact solver is what stops the robot at walls and what lets it
+    push dynamic models, as in flatland's diff drive.
     """
 
-    def __init__(self, b2world, name, spawn_pose, drive=None):
+    def __init__(self, b2world, name, spawn_pose, model=DEFAULT_MODEL, clamp=False):
         self.name = name
+        self.model = model
         self.spawn_pose = Pose2D(*spawn_pose)
-        self.drive = drive if drive is not None else DiffDrive()
-        outlines = waffle_footprint()
-        density = WAFFLE_MASS_KG / sum(_polygon_area(list(p)) for p in outlines)
+        limits = (model.max_linear_mps, model.max_angular_radps) if clamp else None
+        self.drive = DiffDrive(model.wheel_separation_m, model.wheel_radius_m, limits=limits)
+        outlines = model.footprint()
+        density = model.mass_kg / sum(_polygon_area(list(p)) for p in outlines)
         self.body = b2world.CreateDynamicBody(position=(self.spawn_pose.x, self.spawn_pose.y),
                                               angle=self.spawn_pose.yaw, bullet=True, allowSleep=False)
         for outline in outlines:
@@ -67,9 +70,9 @@ class Robot:
         return self.twist_world.rotated(-self.body.angle)
 
     def scan_pose(self):
-        """World pose of base_scan projected on the floor: 6.4 cm behind base_footprint, same heading."""
+        """World pose of base_scan projected on the floor (the Waffle's is 6.4 cm behind base_footprint)."""
         pose = self.pose
-        x, y = pose.compose(WAFFLE_SCAN_OFFSET_X_M, 0.0)
+        x, y = pose.compose(self.model.scan_x_m, 0.0)
         return Pose2D(x, y, pose.yaw)
 
     def teleport(self, pose, twist_world=Twist2D()):

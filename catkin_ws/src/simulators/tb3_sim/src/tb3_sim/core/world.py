@@ -1,28 +1,30 @@
-"""The simulated world: one zero-gravity Box2D world holding the static geometry, the models and the robot.
+"""The simulated world: one zero-gravity Box2D world holding the static geometry, the models and the robots.
 
 Time: a fixed physics step of PHYSICS_STEP_S in simulated time; `time_s` is step count x step, so it never
 drifts. The caller (the ROS node) decides how fast steps are taken in wall time, publishes /clock, and runs the
 sensors at their rates from `time_s`. Physics knows nothing of rendering or ROS.
 
-Gazebo semantics kept (spec §5): reset_world puts every model (including spawned ones) back to its initial pose
-and the robot to its spawn pose with the command zeroed, and keeps sim time running; reset_simulation does the
-same and rewinds sim time to 0. Spawned models survive both. Model names follow /gazebo/model_states:
-`ground_plane`, the world's static model (e.g. `ros_symbol`), the world-file models, the robot, then spawned
-models, in that order.
+Gazebo semantics kept: reset_world puts every model (including spawned ones) back to its initial pose and every
+robot to its spawn pose with the command zeroed, and keeps sim time running; reset_simulation does the same and
+rewinds sim time to 0. Spawned models and robots survive both. Model names follow /gazebo/model_states:
+`ground_plane`, the world's static model (e.g. `ros_symbol`), the world-file models, then robots and spawned
+models in the order they were added.
+
+Several robots (any TurtleBot3 model each) share the world: they collide with each other and with everything
+else, and each one's sensors see the others (`obstacles(excluding=...)`).
 """
 
 from typing import NamedTuple
 
 from Box2D import b2
 
-from tb3_sim.core.diff_drive import DiffDrive
 from tb3_sim.core.errors import DuplicateModelError, OverlapError, ProtectedModelError, UnknownModelError
 from tb3_sim.core.geometry import Pose2D, Twist2D
 from tb3_sim.core.model_body import ModelBody
-from tb3_sim.core.obstacles import model_obstacles, static_obstacles
+from tb3_sim.core.obstacles import model_obstacles, robot_obstacles, static_obstacles
 from tb3_sim.core.robot import Robot
 from tb3_sim.core.shapes import Box, Circle, Polygon, Segment, visible_at
-from tb3_sim.core.waffle import WAFFLE_MODEL_NAME
+from tb3_sim.core.turtlebot3 import DEFAULT_MODEL
 from tb3_sim.core.world_file import GROUND_PLANE_NAME
 
 # 5 ms (200 Hz), flatland's default rather than Gazebo's 1 ms: the drive acts at 30 Hz and the scan at 5 Hz,
@@ -44,15 +46,17 @@ class ModelState(NamedTuple):
 class World:
     """The simulation: `step()` advances physics; sensors and services read and change state between steps.
 
-    Arguments: `description` (a WorldDescription), `robot_pose` (spawn Pose2D of base_footprint, world frame),
-    `robot_name` (model name of the robot, e.g. `turtlebot3_waffle`), `step_s` (physics step, s),
-    `clamp_command` (if True commands are clamped to the Waffle's 0.26 m/s and 1.82 rad/s; Gazebo does not).
-    Sensors are not part of the world: they read it between steps (`obstacles()`, `robot`, `time_s`).
-    Errors are SimError subclasses: DuplicateModelError, UnknownModelError, OverlapError, ProtectedModelError.
+    Arguments: `description` (a WorldDescription), the first robot's `robot_pose` (spawn Pose2D of base_footprint,
+    world frame), `robot_name` (its model name, e.g. `turtlebot3_waffle`; None: start without a robot, as
+    gazebo_ros's empty world) and `robot_model` (a turtlebot3.TurtleBot3Model), `step_s` (physics step, s),
+    `clamp_command` (if True commands are clamped to each model's vendor limits; Gazebo does not). More robots
+    join with `add_robot`. Sensors are not part of the world: they read it between steps (`obstacles()`,
+    `robots()`, `time_s`). Errors are SimError subclasses: DuplicateModelError, UnknownModelError, OverlapError,
+    ProtectedModelError.
     """
 
-    def __init__(self, description, robot_pose=Pose2D(), robot_name=WAFFLE_MODEL_NAME, step_s=PHYSICS_STEP_S,
-                 clamp_command=False):
+    def __init__(self, description, robot_pose=Pose2D(), robot_name=DEFAULT_MODEL.robot_name,
+                 robot_model=DEFAULT_MODEL, step_s=PHYSICS_STEP_S, clamp_command=False):
         self.description = description
         self.step_s = step_s
         self._steps = 0
@@ -67,9 +71,11 @@ class World:
         self._reserved = {GROUND_PLANE_NAME}
         if description.static_model:
             self._reserved.add(description.static_model)
-        if robot_name in self._reserved or robot_name in self._models:
-            raise DuplicateModelError(f"robot name '{robot_name}' is already used by the world")
-        self.robot = Robot(self._b2world, robot_name, robot_pose, DiffDrive(clamp=clamp_command))
+        self.clamp_command = clamp_command
+        self._robots = {}
+        self._added = []   # names of robots and spawned models, in the order they joined
+        if robot_name is not None:
+            self.add_robot(robot_name, robot_model, robot_pose)
 
     @property
     def time_s(self):
@@ -83,19 +89,24 @@ class World:
         time, then physics integrates the step; so a 30 Hz update due at t = 0.1 s shapes the motion up to 0.1 s.
         """
         self._steps += 1
-        self.robot.before_step(self.time_s)
+        now_s = self.time_s
+        robots = self._robots.values()
+        for robot in robots:
+            robot.before_step(now_s)
         self._b2world.Step(self.step_s, VELOCITY_ITERATIONS, POSITION_ITERATIONS)
-        self.robot.after_step(self.step_s)
-        return self.time_s
+        for robot in robots:
+            robot.after_step(self.step_s)
+        return now_s
 
     def run(self, duration_s):
         """Step until `duration_s` more seconds have passed (rounded to whole steps); for tests and tools."""
         for _ in range(round(duration_s / self.step_s)):
             self.step()
 
-    def obstacles(self, reaching_m=0.0):
-        """The geometry now (an `obstacles.Obstacles`): static shapes and models whose top reaches the height
-        `reaching_m` (m above the floor; a planar sensor at that height sees only those), by default all."""
+    def obstacles(self, reaching_m=0.0, excluding=None):
+        """The geometry now (an `obstacles.Obstacles`): static shapes, models and robots (but not the robot
+        `excluding`, the one whose sensor looks) whose top reaches the height `reaching_m` (m above the floor; a
+        planar sensor at that height sees only those), by default all."""
         if reaching_m not in self._static_obstacles:
             self._static_obstacles[reaching_m] = static_obstacles(
                 [s for s in self.description.static_shapes if visible_at(s, reaching_m)])
@@ -103,7 +114,33 @@ class World:
         for model in self._models.values():
             if visible_at(model.spec.shape, reaching_m):
                 obstacles = obstacles + model_obstacles(model.spec.shape, model.pose, model.spec.rgb)
+        for robot in self._robots.values():
+            if robot is not excluding:
+                obstacles = obstacles + robot_obstacles(robot.model, robot.pose, reaching_m)
         return obstacles
+
+    @property
+    def robot(self):
+        """The first robot (the only one in a single-robot world), or None in a world without robots."""
+        return next(iter(self._robots.values()), None)
+
+    def robots(self):
+        """Every robot, in the order they were added."""
+        return list(self._robots.values())
+
+    def add_robot(self, name, model, pose):
+        """Add a TurtleBot3 of `model` named `name` with base_footprint at `pose` (also its reset pose).
+
+        Raises DuplicateModelError if the name is taken, OverlapError if its footprint overlaps another robot or
+        a model.
+        """
+        self._check_free_name(name)
+        placed = _placed(pose)
+        for outline in model.footprint():
+            self._check_overlap(name, pose, b2.polygonShape(vertices=list(outline)), placed)
+        self._robots[name] = Robot(self._b2world, name, pose, model, clamp=self.clamp_command)
+        self._added.append(name)
+        return self._robots[name]
 
     def model_names(self):
         """Names for /gazebo/model_states, in Gazebo's order (see the module docstring)."""
@@ -111,15 +148,14 @@ class World:
         if self.description.static_model:
             names.append(self.description.static_model)
         file_models = [s.name for s in self.description.models if s.name in self._models]
-        spawned = [n for n in self._models if n not in file_models]
-        return names + file_models + [self.robot.name] + spawned
+        return names + file_models + self._added
 
     def model_states(self):
         """[(name, ModelState)] for every model, in `model_names()` order."""
         return [(name, self.get_model_state(name)) for name in self.model_names()]
 
     def has_model(self, name):
-        return name in self._reserved or name == self.robot.name or name in self._models
+        return name in self._reserved or name in self._robots or name in self._models
 
     def model(self, name):
         """The `ModelBody` of a box or cylinder model; raises UnknownModelError."""
@@ -133,8 +169,9 @@ class World:
 
     def get_model_state(self, name):
         """Pose and world-frame twist of the model `name`; raises UnknownModelError."""
-        if name == self.robot.name:
-            return ModelState(self.robot.pose, self.robot.twist_world)
+        robot = self._robots.get(name)
+        if robot is not None:
+            return ModelState(robot.pose, robot.twist_world)
         if name in self._reserved:
             return ModelState(Pose2D(), Twist2D())
         model = self.model(name)
@@ -145,8 +182,8 @@ class World:
 
         Raises UnknownModelError, or ProtectedModelError for the ground plane and the static world geometry.
         """
-        if name == self.robot.name:
-            self.robot.teleport(pose, twist_world)
+        if name in self._robots:
+            self._robots[name].teleport(pose, twist_world)
         elif name in self._reserved:
             raise ProtectedModelError(f"model '{name}' is fixed world geometry and cannot be moved")
         else:
@@ -155,37 +192,34 @@ class World:
     def spawn_model(self, spec):
         """Add the model described by `spec` (a world_file.ModelSpec) at `spec.pose`; that pose is its reset pose.
 
-        Raises DuplicateModelError if the name is taken, OverlapError if its footprint overlaps the robot or
+        Raises DuplicateModelError if the name is taken, OverlapError if its footprint overlaps a robot or
         another model (Box2D's test, which includes its 1 cm polygon skin).
         """
         self._check_free_name(spec.name)
-        candidate = _b2_shape(spec.shape)
-        placed = b2.transform()
-        placed.position, placed.angle = (spec.pose.x, spec.pose.y), spec.pose.yaw
-        others = [(self.robot.name, self.robot.body)] + [(m.name, m.body) for m in self._models.values()]
-        for other_name, body in others:
-            for fixture in body.fixtures:
-                if b2.testOverlap(candidate, 0, fixture.shape, 0, placed, body.transform):
-                    raise OverlapError(f"model '{spec.name}' would overlap '{other_name}' at "
-                                       f"({spec.pose.x:.3f}, {spec.pose.y:.3f})")
+        self._check_overlap(spec.name, spec.pose, _b2_shape(spec.shape), _placed(spec.pose))
         self._models[spec.name] = ModelBody(self._b2world, self._ground, spec)
+        self._added.append(spec.name)
 
     def delete_model(self, name):
         """Remove a box or cylinder model. Raises UnknownModelError, or ProtectedModelError for the robot,
         the ground plane and the static world geometry."""
-        if name == self.robot.name:
-            raise ProtectedModelError(f"model '{name}' is the robot and cannot be deleted")
+        if name in self._robots:
+            raise ProtectedModelError(f"model '{name}' is a robot and cannot be deleted")
         if name in self._reserved:
             raise ProtectedModelError(f"model '{name}' is fixed world geometry and cannot be deleted")
         model = self.model(name)
         self._b2world.DestroyBody(model.body)
         del self._models[name]
+        if name in self._added:
+            self._added.remove(name)
 
     def reset_world(self):
-        """Models back to their initial poses, robot to its spawn pose with a zero command; time keeps running."""
+        """Models back to their initial poses, robots to their spawn poses with a zero command; time keeps
+        running."""
         for model in self._models.values():
             model.reset()
-        self.robot.reset(self.time_s)
+        for robot in self._robots.values():
+            robot.reset(self.time_s)
 
     def reset_simulation(self):
         """reset_world plus sim time back to 0 (the sensors restart their own state: see their `reset`)."""
@@ -195,6 +229,14 @@ class World:
     def _check_free_name(self, name):
         if self.has_model(name):
             raise DuplicateModelError(f"model '{name}' already exists")
+
+    def _check_overlap(self, name, pose, candidate, placed):
+        """Raise OverlapError if the Box2D shape `candidate` at transform `placed` overlaps a robot or a model."""
+        others = [(r.name, r.body) for r in self._robots.values()] + [(m.name, m.body) for m in self._models.values()]
+        for other_name, body in others:
+            for fixture in body.fixtures:
+                if b2.testOverlap(candidate, 0, fixture.shape, 0, placed, body.transform):
+                    raise OverlapError(f"model '{name}' would overlap '{other_name}' at ({pose.x:.3f}, {pose.y:.3f})")
 
     def _add_static_shape(self, shape):
         if isinstance(shape, Segment):
@@ -206,6 +248,13 @@ class World:
                                              friction=STATIC_CONTACT_FRICTION)
         else:
             raise TypeError(f"not a static shape: {shape!r}")
+
+
+def _placed(pose):
+    """A Box2D transform at `pose`."""
+    placed = b2.transform()
+    placed.position, placed.angle = (pose.x, pose.y), pose.yaw
+    return placed
 
 
 def _b2_shape(shape):

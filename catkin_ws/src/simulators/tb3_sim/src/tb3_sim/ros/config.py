@@ -4,36 +4,39 @@ Private parameters (all optional; see `tb3_sim.ros.node` for what each one does)
 
     ~world                   "empty"    a shipped world name (empty, turtlebot3_world, approach_arena) or a path
                                         to a world YAML file
+    ~spawn_robot             true       false: start without a robot (gazebo_ros's empty world); robots then
+                                        come with /gazebo/spawn_urdf_model (spawn_model -urdf)
+    ~model                   "waffle"   the robot's TurtleBot3 model: burger, waffle or waffle_pi
     ~x_pos, ~y_pos, ~yaw     0.0        robot spawn pose in the world frame (m, m, rad)
-    ~robot_name              "turtlebot3_waffle"  the robot's model name in /gazebo/* services
+    ~robot_name              turtlebot3_<model>  the robot's model name in /gazebo/* services
     ~seed                    0          LiDAR noise seed (int)
     ~real_time_factor        1.0        sim seconds per wall second; any value > 0, or 0 = as fast as possible
-    ~lidar_sees_low_objects  false      true: the scan also sees models lower than the 0.132 m scan plane
-    ~clamp_command           false      true: clamp /cmd_vel to 0.26 m/s and 1.82 rad/s (Gazebo does not)
+    ~lidar_sees_low_objects  false      true: the scan also sees models lower than the scan plane (0.132 m on a
+                                        Waffle)
+    ~clamp_command           false      true: clamp cmd_vel to the model's limits (Waffle 0.26 m/s, 1.82 rad/s;
+                                        Gazebo does not)
     ~paused                  false      start with physics paused (as gazebo's `paused` arg)
     ~headless                false      true: never open a window; false: a window when $DISPLAY is set
     ~snapshot_path           "/tmp/tb3_sim.png"  where the ~snapshot service writes its PNG
-    ~publish_static_tf       true       publish the Waffle's fixed joints on /tf_static
-    ~camera_width            1920       camera image width in pixels (the R200 in Gazebo's Waffle), 16..4096
-    ~camera_height           1080       camera image height in pixels, 16..4096
-    ~camera_rate             30.0       camera frames per second of sim time, (0, 1000]
+    ~publish_static_tf       true       publish each robot's fixed joints (its URDF's) on /tf_static
+    ~camera_width            model's    camera image width in pixels, 16..4096 (Waffle's R200 1920, Waffle Pi 640)
+    ~camera_height           model's    camera image height in pixels, 16..4096 (1080, 480)
+    ~camera_rate             model's    camera frames per second of sim time, (0, 1000] (30)
+The camera settings apply to every robot that has a camera; unset, each camera keeps its model's own.
 """
 
 import math
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Optional
 
-from tb3_sim.core.camera import R200_HEIGHT_PX, R200_UPDATE_RATE_HZ, R200_WIDTH_PX
 from tb3_sim.core.errors import ConfigError
-from tb3_sim.core.waffle import WAFFLE_MODEL_NAME
+from tb3_sim.core.turtlebot3 import DEFAULT_MODEL, TURTLEBOT3_MODELS
 
 DEFAULT_WORLD = "empty"
 DEFAULT_SNAPSHOT_PATH = "/tmp/tb3_sim.png"
 WORLD_FILE_SUFFIX = ".yaml"
-# The Gazebo Waffle's realsense_R200 sensor (core.camera): 1920x1080 at 30 Hz. Smaller images make lighter runs.
-DEFAULT_CAMERA_WIDTH_PX = R200_WIDTH_PX
-DEFAULT_CAMERA_HEIGHT_PX = R200_HEIGHT_PX
-DEFAULT_CAMERA_RATE_HZ = R200_UPDATE_RATE_HZ
+GAZEBO_WORLD_SUFFIX = ".world"
 CAMERA_SIZE_RANGE_PX = (16, 4096)
 MAX_CAMERA_RATE_HZ = 1000.0
 
@@ -43,10 +46,12 @@ class SimConfig:
     """Validated node settings; `world_path` is resolved to an existing file."""
 
     world_path: Path
+    spawn_robot: bool = True
+    model: str = DEFAULT_MODEL.name
     x_pos: float = 0.0
     y_pos: float = 0.0
     yaw: float = 0.0
-    robot_name: str = WAFFLE_MODEL_NAME
+    robot_name: str = DEFAULT_MODEL.robot_name
     seed: int = 0
     real_time_factor: float = 1.0
     lidar_sees_low_objects: bool = False
@@ -55,19 +60,24 @@ class SimConfig:
     headless: bool = False
     snapshot_path: str = DEFAULT_SNAPSHOT_PATH
     publish_static_tf: bool = True
-    camera_width: int = DEFAULT_CAMERA_WIDTH_PX
-    camera_height: int = DEFAULT_CAMERA_HEIGHT_PX
-    camera_rate: float = DEFAULT_CAMERA_RATE_HZ
+    camera_width: Optional[int] = None
+    camera_height: Optional[int] = None
+    camera_rate: Optional[float] = None
 
 
 def resolve_world(value, worlds_dir):
-    """Path of the world file named by `value`: a shipped world's name (looked up in `worlds_dir`) or a path.
+    """Path of the world file named by `value`: a shipped world's name (looked up in `worlds_dir`), a Gazebo
+    .world name or path as launch files pass to gazebo_ros (`worlds/empty.world`,
+    `$(find turtlebot3_gazebo)/worlds/turtlebot3_house.world`: the shipped world of the same name; Gazebo's
+    files themselves are not read), or a path to a world YAML file.
 
     Raises ConfigError naming the shipped worlds if there is no such file.
     """
     if not isinstance(value, str) or not value.strip():
         raise ConfigError(f"~world must be a world name or a file path, got {value!r}")
     worlds_dir = Path(worlds_dir)
+    if value.endswith(GAZEBO_WORLD_SUFFIX):
+        value = Path(value).stem
     is_path = value.endswith(WORLD_FILE_SUFFIX) or "/" in value
     path = Path(value).expanduser() if is_path else worlds_dir / (value + WORLD_FILE_SUFFIX)
     if not path.is_file():
@@ -83,12 +93,15 @@ def config_from_params(params, worlds_dir):
     Unknown keys are ignored (launch files may set more); bad types and values raise ConfigError.
     """
     reader = _ParamReader(params)
+    model = reader.choice("model", DEFAULT_MODEL.name, TURTLEBOT3_MODELS)
     return SimConfig(
         world_path=resolve_world(params.get("world", DEFAULT_WORLD), worlds_dir),
+        spawn_robot=reader.flag("spawn_robot", True),
+        model=model,
         x_pos=reader.number("x_pos", 0.0),
         y_pos=reader.number("y_pos", 0.0),
         yaw=reader.number("yaw", 0.0),
-        robot_name=reader.name("robot_name", WAFFLE_MODEL_NAME),
+        robot_name=reader.name("robot_name", TURTLEBOT3_MODELS[model].robot_name),
         seed=reader.integer("seed", 0),
         real_time_factor=reader.number("real_time_factor", 1.0, minimum=0.0),
         lidar_sees_low_objects=reader.flag("lidar_sees_low_objects", False),
@@ -97,10 +110,10 @@ def config_from_params(params, worlds_dir):
         headless=reader.flag("headless", False),
         snapshot_path=reader.text("snapshot_path", DEFAULT_SNAPSHOT_PATH),
         publish_static_tf=reader.flag("publish_static_tf", True),
-        camera_width=reader.integer("camera_width", DEFAULT_CAMERA_WIDTH_PX, CAMERA_SIZE_RANGE_PX),
-        camera_height=reader.integer("camera_height", DEFAULT_CAMERA_HEIGHT_PX, CAMERA_SIZE_RANGE_PX),
-        camera_rate=reader.number("camera_rate", DEFAULT_CAMERA_RATE_HZ, minimum=0.0, maximum=MAX_CAMERA_RATE_HZ,
-                                  exclusive_minimum=True),
+        camera_width=reader.optional(reader.integer, "camera_width", CAMERA_SIZE_RANGE_PX),
+        camera_height=reader.optional(reader.integer, "camera_height", CAMERA_SIZE_RANGE_PX),
+        camera_rate=reader.optional(reader.number, "camera_rate", minimum=0.0, maximum=MAX_CAMERA_RATE_HZ,
+                                    exclusive_minimum=True),
     )
 
 
@@ -124,6 +137,16 @@ class _ParamReader:
             raise ConfigError(f"~{key} must be an integer, got {value!r}")
         if bounds is not None and not bounds[0] <= value <= bounds[1]:
             raise ConfigError(f"~{key} must be in [{bounds[0]}, {bounds[1]}], got {value!r}")
+        return value
+
+    def optional(self, read, key, *args, **kwargs):
+        """`read(key, default, ...)` if `key` is given, else None (the default is then someone else's)."""
+        return read(key, None, *args, **kwargs) if key in self._params else None
+
+    def choice(self, key, default, choices):
+        value = self._params.get(key, default)
+        if not isinstance(value, str) or value not in choices:
+            raise ConfigError(f"~{key} must be one of {', '.join(choices)}, got {value!r}")
         return value
 
     def flag(self, key, default):

@@ -4,7 +4,8 @@
   kept, sim time runs on;
 - reset_simulation (std_srvs/Empty): the same, and sim time back to 0 (/clock jumps back);
 - pause_physics / unpause_physics (std_srvs/Empty): stop / resume stepping, so /clock stops too;
-- spawn_sdf_model (gazebo_msgs/SpawnModel): SDF or URDF (see model_xml) -> a box or cylinder model;
+- spawn_sdf_model (gazebo_msgs/SpawnModel): SDF or URDF (see model_xml) -> a box or cylinder model, or a
+  TurtleBot3 robot with all its sensors in the request's robot_namespace (see node: spawn_robot);
 - spawn_urdf_model (gazebo_msgs/SpawnModel): the same, URDF only;
 - delete_model (gazebo_msgs/DeleteModel): any model but the robot, the ground plane and the world geometry;
 - get_model_state (gazebo_msgs/GetModelState): world pose and world-frame twist, or relative to
@@ -12,7 +13,13 @@
 - set_model_state (gazebo_msgs/SetModelState, and the topic of gazebo_msgs/ModelState): teleport with a twist,
   both given in reference_frame;
 - get_world_properties (gazebo_msgs/GetWorldProperties): sim_time, model_names (model_states order),
-  rendering_enabled.
+  rendering_enabled;
+- get_physics_properties / set_physics_properties (gazebo_msgs/GetPhysicsProperties, SetPhysicsProperties):
+  Gazebo's real-time factor is max_update_rate x time_step (max_update_rate 0: as fast as possible), and that
+  product is what set_physics_properties changes here (the node's pacing, as ~real_time_factor). The physics
+  step itself stays PHYSICS_STEP_S; the time_step and max_update_rate last set are reported back as given, and
+  so are gravity and the ODE settings, which a 2D simulator has no use for. Before any set, time_step is the
+  physics step and max_update_rate = real_time_factor / time_step.
 
 Spawn: `model_name` overrides the XML's name (the XML's name is used when it is empty); `initial_pose` (x, y,
 yaw; z, roll and pitch ignored) is composed with the pose in the XML, then with `reference_frame` (see
@@ -28,20 +35,25 @@ import math
 from dataclasses import replace
 
 import rospy
-from gazebo_msgs.msg import ModelState
+from gazebo_msgs.msg import ModelState, ODEPhysics
 from gazebo_msgs.srv import (
     DeleteModel,
     DeleteModelResponse,
     GetModelState,
     GetModelStateResponse,
+    GetPhysicsProperties,
+    GetPhysicsPropertiesResponse,
     GetWorldProperties,
     GetWorldPropertiesResponse,
     SetModelState,
     SetModelStateRequest,
     SetModelStateResponse,
+    SetPhysicsProperties,
+    SetPhysicsPropertiesResponse,
     SpawnModel,
     SpawnModelResponse,
 )
+from geometry_msgs.msg import Vector3
 from std_srvs.srv import Empty, EmptyResponse
 
 from tb3_sim.core.errors import (
@@ -55,7 +67,8 @@ from tb3_sim.core.errors import (
     UnknownModelError,
 )
 from tb3_sim.core.geometry import Twist2D
-from tb3_sim.core.model_xml import compose, parse_model_xml
+from tb3_sim.core.model_xml import TurtleBot3Spec, compose, parse_model_xml
+from tb3_sim.core.physics_properties import physics_properties
 from tb3_sim.core.reference_frames import frame_state, from_world, to_world
 from tb3_sim.ros import messages
 
@@ -64,8 +77,16 @@ DELETED = "DeleteModel: successfully deleted model"
 GOT_MODEL_STATE = "GetModelState: got properties"
 SET_MODEL_STATE = "SetModelState: set model state done"
 GOT_WORLD_PROPERTIES = "GetWorldProperties: got properties"
+GOT_PHYSICS_PROPERTIES = "GetPhysicsProperties: got properties"
+SET_PHYSICS_PROPERTIES = "physics engine updated"
 NOT_MODEL_XML = ("GazeboRosApiPlugin SpawnModel Failure: input model_xml not SDF or URDF, or cannot be "
                  "converted to Gazebo compatible format.")
+
+# The ODE settings of every turtlebot3_gazebo world (quick solver, 150 iterations, SOR 1.4, cfm 1e-5, erp 0.2,
+# contact surface layer 0.01 m), reported until someone sets others.
+TURTLEBOT3_WORLD_ODE = dict(auto_disable_bodies=False, sor_pgs_precon_iters=0, sor_pgs_iters=150, sor_pgs_w=1.4,
+                            sor_pgs_rms_error_tol=0.0, contact_surface_layer=0.01, contact_max_correcting_vel=100.0,
+                            cfm=1e-5, erp=0.2, max_contacts=20)
 
 # Sanity limits of requests (Box2D works in float32): positions within 1 km, speeds as in set_model_state.
 MAX_COORDINATE_M = 1000.0
@@ -107,6 +128,7 @@ class GazeboApi:
     def __init__(self, sim):
         self._sim = sim
         self._get_model_state_calls = {}
+        self._ode_config = ODEPhysics(**TURTLEBOT3_WORLD_ODE)
 
     def advertise(self):
         """Register every service and the /gazebo/set_model_state topic; returns the rospy objects."""
@@ -121,6 +143,8 @@ class GazeboApi:
             rospy.Service("~get_model_state", GetModelState, self.get_model_state),
             rospy.Service("~set_model_state", SetModelState, self.set_model_state),
             rospy.Service("~get_world_properties", GetWorldProperties, self.get_world_properties),
+            rospy.Service("~get_physics_properties", GetPhysicsProperties, self.get_physics_properties),
+            rospy.Service("~set_physics_properties", SetPhysicsProperties, self.set_physics_properties),
             rospy.Subscriber("~set_model_state", ModelState, self.on_model_state, queue_size=10),
         ]
 
@@ -156,7 +180,11 @@ class GazeboApi:
             with self._sim.locked_world() as world:
                 frame = frame_state(world, request.reference_frame)
                 pose, _ = to_world(frame, compose(initial, spec.pose), Twist2D())
-                world.spawn_model(replace(spec, name=name, pose=_within_world(pose, "initial_pose")))
+                pose = _within_world(pose, "initial_pose")
+                if not isinstance(spec, TurtleBot3Spec):
+                    world.spawn_model(replace(spec, name=name, pose=pose))
+            if isinstance(spec, TurtleBot3Spec):
+                self._sim.spawn_robot(name, spec.model, pose, request.robot_namespace)
         except SimError as error:
             return SpawnModelResponse(False, self._failed("SpawnModel", error))
         rospy.loginfo(f"spawned '{name}' at ({pose.x:.3f}, {pose.y:.3f}, yaw {pose.yaw:.3f})")
@@ -214,6 +242,26 @@ class GazeboApi:
             return GetWorldPropertiesResponse(sim_time=world.time_s, model_names=world.model_names(),
                                               rendering_enabled=self._sim.rendering_enabled, success=True,
                                               status_message=GOT_WORLD_PROPERTIES)
+
+    def get_physics_properties(self, _request):
+        properties = self._sim.physics_properties
+        return GetPhysicsPropertiesResponse(time_step=properties.time_step_s, pause=self._sim.paused,
+                                            max_update_rate=properties.max_update_rate_hz,
+                                            gravity=Vector3(*properties.gravity), ode_config=self._ode_config,
+                                            success=True, status_message=GOT_PHYSICS_PROPERTIES)
+
+    def set_physics_properties(self, request):
+        gravity = request.gravity
+        try:
+            properties = physics_properties(request.time_step, request.max_update_rate,
+                                            (gravity.x, gravity.y, gravity.z))
+        except SimError as error:
+            return SetPhysicsPropertiesResponse(False, self._failed("SetPhysicsProperties", error))
+        self._ode_config = request.ode_config
+        self._sim.set_physics_properties(properties)
+        rospy.loginfo(f"physics properties set: real-time factor {properties.real_time_factor:g}"
+                      f"{' (as fast as possible)' if properties.real_time_factor == 0 else ''}")
+        return SetPhysicsPropertiesResponse(True, SET_PHYSICS_PROPERTIES)
 
     @staticmethod
     def _failed(service, error):

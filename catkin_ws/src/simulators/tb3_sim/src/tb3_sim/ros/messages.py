@@ -1,12 +1,13 @@
 """Conversions between the core's plain values and ROS messages (message classes only; no rospy, no node).
 
-Frames and conventions are Gazebo's for the TurtleBot3 Waffle (spec §2-§3):
+Frames and conventions are Gazebo's for the TurtleBot3 (the frame names below, with a robot's tf_prefix if it has
+one: see robot_naming):
 - /odom: frame `odom`, child `base_footprint`, pose = true world pose, twist in the body frame, pose
   covariance diagonal [1e-5, 1e-5, 1e12, 1e12, 1e12, 1e-3], twist covariance all zero;
 - /tf: odom -> base_footprint with the same stamp as /odom;
 - /joint_states: the two wheel joints, positions only (velocity and effort empty);
 - /scan: frame `base_scan`, Gazebo's angles, +inf for no return, 360 zero intensities;
-- /imu: frame `base_footprint` (Gazebo's URDF->SDF conversion merges imu_link away, spec §3.3), world yaw,
+- /imu: frame `base_footprint` (Gazebo's URDF->SDF conversion merges imu_link away), world yaw,
   yaw rate, acceleration without gravity, all covariances zero (the plugin's noise is 0).
 Every stamp is simulated time in seconds, converted exactly at nanosecond resolution.
 """
@@ -22,7 +23,7 @@ from sensor_msgs.msg import Imu, JointState, LaserScan
 from tf2_msgs.msg import TFMessage
 
 from tb3_sim.core.geometry import Pose2D, Twist2D, quaternion_to_yaw, yaw_to_quaternion
-from tb3_sim.core.waffle import WHEEL_JOINT_NAMES
+from tb3_sim.core.turtlebot3 import SCAN_FRAME, WHEEL_JOINT_NAMES
 
 ODOM_FRAME = "odom"
 BASE_FRAME = "base_footprint"
@@ -76,12 +77,12 @@ def twist_from_message(message):
     return Twist2D(message.linear.x, message.linear.y, message.angular.z)
 
 
-def odometry_message(time_s, pose, twist_body):
+def odometry_message(time_s, pose, twist_body, odom_frame=ODOM_FRAME, base_frame=BASE_FRAME):
     """/odom: world pose of base_footprint and its body-frame twist at `time_s`."""
     message = Odometry()
     message.header.stamp = stamp(time_s)
-    message.header.frame_id = ODOM_FRAME
-    message.child_frame_id = BASE_FRAME
+    message.header.frame_id = odom_frame
+    message.child_frame_id = base_frame
     message.pose.pose = pose_message(pose)
     covariance = [0.0] * 36
     for i, value in enumerate(ODOM_POSE_COVARIANCE_DIAGONAL):
@@ -91,12 +92,12 @@ def odometry_message(time_s, pose, twist_body):
     return message
 
 
-def odom_tf_message(time_s, pose):
+def odom_tf_message(time_s, pose, odom_frame=ODOM_FRAME, base_frame=BASE_FRAME):
     """/tf: odom -> base_footprint at `time_s`."""
     transform = TransformStamped()
     transform.header.stamp = stamp(time_s)
-    transform.header.frame_id = ODOM_FRAME
-    transform.child_frame_id = BASE_FRAME
+    transform.header.frame_id = odom_frame
+    transform.child_frame_id = base_frame
     transform.transform.translation.x, transform.transform.translation.y = pose.x, pose.y
     transform.transform.rotation = quaternion_message(pose.yaw)
     return TFMessage(transforms=[transform])
@@ -135,11 +136,11 @@ def joint_state_message(time_s, wheel_angles):
     return message
 
 
-def scan_message(scan):
+def scan_message(scan, frame_id=SCAN_FRAME):
     """/scan from a lidar.ScanResult, stamped at its measurement time."""
     message = LaserScan()
     message.header.stamp = stamp(scan.time_s)
-    message.header.frame_id = scan.frame_id
+    message.header.frame_id = frame_id
     message.angle_min, message.angle_max = scan.angle_min, scan.angle_max
     message.angle_increment = scan.angle_increment
     message.time_increment, message.scan_time = scan.time_increment, scan.scan_time
@@ -149,11 +150,11 @@ def scan_message(scan):
     return message
 
 
-def imu_message(reading):
+def imu_message(reading, frame_id=IMU_FRAME):
     """/imu from an imu.ImuReading."""
     message = Imu()
     message.header.stamp = stamp(reading.time_s)
-    message.header.frame_id = IMU_FRAME
+    message.header.frame_id = frame_id
     message.orientation = quaternion_message(reading.yaw)
     message.angular_velocity.z = reading.yaw_rate
     message.linear_acceleration.x, message.linear_acceleration.y = reading.accel_x, reading.accel_y

@@ -1,24 +1,33 @@
-"""The ROS 1 node around the simulation core: Gazebo's TurtleBot3 Waffle topics, /clock and /gazebo/* services.
+"""The ROS 1 node around the simulation core: Gazebo's TurtleBot3 topics, /clock and /gazebo/* services.
 
 Node name `gazebo` (as gzserver's), so its private services are /gazebo/reset_world and so on.
 
+Robots: the node starts with one TurtleBot3 (~model, at ~x_pos, ~y_pos, ~yaw) unless ~spawn_robot is false, as
+gazebo_ros's empty world; more come through /gazebo/spawn_urdf_model (or spawn_sdf_model) with a TurtleBot3 URDF
+(robot name turtlebot3_burger, turtlebot3_waffle or turtlebot3_waffle_pi, as `spawn_model -urdf -param
+robot_description` sends it), each in the request's robot_namespace with its frames prefixed (see
+robot_naming): any number of robots, colliding with and seen by each other. Two robots may not share a namespace
+(their topics would clash); a robot cannot be deleted.
+
+Per robot (names below in its namespace):
 Subscribes: `cmd_vel` (geometry_msgs/Twist, queue 1; linear.x and angular.z held until the next message, no
-  timeout; NaN, inf or absurd values are ignored with a throttled warning and the previous command is kept);
-  /gazebo/set_model_state (gazebo_msgs/ModelState).
-Publishes: /clock every physics step (5 ms of sim time); `odom` (nav_msgs/Odometry), /tf odom -> base_footprint
-  and `joint_states` at 30 Hz; `scan` (sensor_msgs/LaserScan) at 5 Hz; `imu` (sensor_msgs/Imu) at 100 Hz;
-  /gazebo/model_states at 100 Hz (the last three only while subscribed); /tf_static (latched) with the Waffle's
-  fixed joints unless ~publish_static_tf is false; ~world_markers (visualization_msgs/MarkerArray, latched, and
-  again at 2 Hz while subscribed: walls, models, the robot's body, for rviz/tb3_sim.rviz); the RealSense camera's
-  /camera/rgb/image_raw, /camera/rgb/image_raw/compressed, /camera/rgb/camera_info, /camera/depth/image_raw and
-  /camera/depth/camera_info at ~camera_rate (30 Hz, only while subscribed; see outputs.camera). All rates are in
-  simulated time; each periodic output is one object registered in tb3_sim.ros.outputs.registry.
+  timeout; NaN, inf or absurd values are ignored with a throttled warning and the previous command is kept).
+Publishes: `odom` (nav_msgs/Odometry), /tf odom -> base_footprint and `joint_states` at 30 Hz; `scan`
+  (sensor_msgs/LaserScan) at 5 Hz; `imu` (sensor_msgs/Imu) at 100 Hz (the last two only while subscribed); the
+  camera's `camera/rgb/image_raw`, `camera/rgb/image_raw/compressed`, `camera/rgb/camera_info` and on a Waffle
+  `camera/depth/image_raw` and `camera/depth/camera_info` at the camera's rate (30 Hz, only while subscribed; see
+  outputs.camera); its fixed joints on /tf_static (latched) unless ~publish_static_tf is false.
+Once: /clock every physics step (5 ms of sim time); /gazebo/model_states at 100 Hz while subscribed;
+  /gazebo/set_model_state (subscribed, gazebo_msgs/ModelState); ~world_markers (visualization_msgs/MarkerArray,
+  latched, and again at 2 Hz while subscribed: walls, models, the robots' bodies, for rviz/tb3_sim.rviz). All
+  rates are in simulated time; each periodic output is one object registered in tb3_sim.ros.outputs.registry.
 Services: /gazebo/{reset_world, reset_simulation, pause_physics, unpause_physics, spawn_sdf_model,
-  spawn_urdf_model, delete_model, get_model_state, set_model_state, get_world_properties} (see gazebo_api),
+  spawn_urdf_model, delete_model, get_model_state, set_model_state, get_world_properties,
+  get_physics_properties, set_physics_properties} (see gazebo_api),
   and ~snapshot (std_srvs/Empty): write a top-down PNG of the world (walls, models, robot, its trail, the
   latest laser rays; see renderer) to ~snapshot_path; an unwritable path fails the call with the reason.
-Parameters: see tb3_sim.ros.config (~world, ~x_pos, ~y_pos, ~yaw, ~robot_name, ~seed, ~real_time_factor,
-  ~lidar_sees_low_objects, ~clamp_command, ~paused, ~headless, ~snapshot_path, ~publish_static_tf,
+Parameters: see tb3_sim.ros.config (~world, ~spawn_robot, ~model, ~x_pos, ~y_pos, ~yaw, ~robot_name, ~seed,
+  ~real_time_factor, ~lidar_sees_low_objects, ~clamp_command, ~paused, ~headless, ~snapshot_path, ~publish_static_tf,
   ~camera_width, ~camera_height, ~camera_rate).
 /use_sim_time is set to true before the node starts if it is absent, as gazebo_ros does. If roscore is
 restarted, the node registers everything again with the new master and sets /use_sim_time there too
@@ -32,8 +41,9 @@ Differences from Gazebo, on purpose:
 - Physics is 2D (Box2D) with 5 ms steps: objects stand on the floor, z, roll and pitch are always 0, spawned
   models are single boxes, cylinders or spheres; /clock advances 5 ms per step instead of 1 ms.
 - /imu and /gazebo/model_states go out at 100 Hz instead of on every 1 ms world update.
-- /tf_static carries the Waffle's fixed joints (robot_state_publisher's job in Gazebo launches) unless
-  ~publish_static_tf is false; the IMU message is in base_footprint, as Gazebo's URDF conversion leaves it.
+- /tf_static carries each robot's fixed joints (robot_state_publisher's job in Gazebo launches, which may run
+  beside it: both publish the same transforms) unless ~publish_static_tf is false; the IMU message is in
+  base_footprint, as Gazebo's URDF conversion leaves it.
 - The camera renders the 2D world in 2.5D (upright solids of each object's height and colour, flat floor and
   sky, no textures, lights or shadows); /camera/depth/points is not published; camera_info is published to a
   camera_info subscriber even when no image is taken.
@@ -67,21 +77,23 @@ from tf2_msgs.msg import TFMessage
 
 from master_reconnect import keep_registered
 from tb3_sim.core.diff_drive import validate_command
-from tb3_sim.core.errors import SimError
+from tb3_sim.core.errors import BadRequestError, SimError
 from tb3_sim.core.geometry import Pose2D
 from tb3_sim.core.pacing import Pacer
+from tb3_sim.core.physics_properties import PhysicsProperties
 from tb3_sim.core.schedule import PeriodicSchedule
-from tb3_sim.core.waffle import WAFFLE_STATIC_TRANSFORMS
+from tb3_sim.core.turtlebot3 import TURTLEBOT3_MODELS
 from tb3_sim.core.world import World
 from tb3_sim.core.world_file import load_world
 from tb3_sim.ros import messages
 from tb3_sim.ros.config import config_from_params
 from tb3_sim.ros.gazebo_api import GazeboApi
-from tb3_sim.ros.outputs import OutputPublisher, registered_outputs
+from tb3_sim.ros.outputs import OutputPublisher, robot_outputs, world_outputs
 from tb3_sim.ros.outputs.scan import ScanOutput
 from tb3_sim.ros.publishers import output_publisher
+from tb3_sim.ros.robot_naming import spawned_robot_naming
 from tb3_sim.ros.stop_request import StopRequest
-from tb3_sim.view.scene import Trail, scene_of
+from tb3_sim.view.scene import Trails, scene_of
 
 NODE_NAME = "gazebo"
 PACKAGE = "tb3_sim"
@@ -94,7 +106,7 @@ SHUTDOWN_CHECK_MS = 100
 
 
 class SimNode:
-    """Owns the world, the lock around it, the pause flag and the publishing loop (`spin`)."""
+    """Owns the world, the lock around it, the pause flag, the robots' ROS ends and the publishing loop (`spin`)."""
 
     def __init__(self, config, world):
         self.config = config
@@ -104,19 +116,53 @@ class SimNode:
         self._running = threading.Event()
         if not config.paused:
             self._running.set()
+        self._physics = PhysicsProperties.for_pacing(world.step_s, config.real_time_factor)
         self._pacer = Pacer(config.real_time_factor)
-        self._outputs = OutputPublisher(registered_outputs(config), output_publisher)
-        self._scan = self._outputs.output(ScanOutput)
+        self._outputs = OutputPublisher(world_outputs(), output_publisher)
+        self._namings = {}        # robot name -> RobotNaming
+        self._cmd_vel = []        # one Subscriber per robot
+        self._static_transforms = ()
+        self._static_tf = None
         if config.publish_static_tf:
             self._static_tf = rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True)
-            self._static_tf.publish(messages.static_tf_message(world.time_s, WAFFLE_STATIC_TRANSFORMS))
-        self._cmd_vel = rospy.Subscriber("cmd_vel", Twist, self._on_cmd_vel, queue_size=1)
-        self._trail = Trail()
+        self._trails = Trails()
         self._trail_schedule = PeriodicSchedule(TRAIL_RATE_HZ)
+        for robot in world.robots():
+            self._attach(robot, spawned_robot_naming(rospy.get_namespace(), _tf_prefix_param(rospy.get_namespace())))
         self._services = GazeboApi(self).advertise()
         self._snapshot = rospy.Service("~snapshot", Empty, self._on_snapshot)
         for publisher, message in self._outputs.latched(world):
             publisher.publish(message)
+
+    def spawn_robot(self, name, model, pose, robot_namespace):
+        """Add a TurtleBot3 of `model` named `name` at `pose` (world) with its topics in `robot_namespace`.
+
+        Raises SimError: DuplicateModelError, OverlapError, or BadRequestError if another robot has that namespace.
+        """
+        naming = spawned_robot_naming(robot_namespace, _tf_prefix_param(robot_namespace))
+        with self._lock:
+            for other, other_naming in self._namings.items():
+                if other_naming.namespace == naming.namespace:
+                    raise BadRequestError(
+                        f"robot namespace '{naming.namespace}' is already used by robot '{other}', so their topics "
+                        f"would clash: spawn it in another namespace (spawn_model in a <group ns=...>, or "
+                        f"-robot_namespace)")
+            self._attach(self._world.add_robot(name, model, pose), naming)
+
+    def _attach(self, robot, naming):
+        """Give `robot` its ROS ends: outputs, cmd_vel and static transforms (world locked, or not yet shared)."""
+        self._namings[robot.name] = naming
+        self._outputs.add(robot_outputs(self.config, robot, naming, len(self._namings) - 1), self._world.time_s)
+        self._cmd_vel.append(rospy.Subscriber(naming.topic("cmd_vel"), Twist, self._on_cmd_vel, callback_args=robot,
+                                              queue_size=1))
+        if self._static_tf is not None:
+            self._static_transforms += naming.transforms(robot.model.static_transforms)
+            self._static_tf.publish(messages.static_tf_message(self._world.time_s, self._static_transforms))
+
+    @property
+    def _scan(self):
+        """The first robot's ScanOutput (the one a view shows), or None without robots."""
+        return self._outputs.output(ScanOutput)
 
     @contextmanager
     def locked_world(self):
@@ -132,11 +178,22 @@ class SimNode:
     def scene(self):
         """A Scene of the world now, with the latest published scan (for a window: no extra LiDAR sweeps)."""
         with self._lock:
-            return scene_of(self._world, self._trail, self._scan.recent(self._world.time_s))
+            scan = self._scan.recent(self._world.time_s) if self._scan else None
+            return scene_of(self._world, self._trails, scan)
 
     @property
     def paused(self):
         return not self._running.is_set()
+
+    @property
+    def physics_properties(self):
+        """The PhysicsProperties last set (at start: the physics step and ~real_time_factor)."""
+        return self._physics
+
+    def set_physics_properties(self, properties):
+        """Pace the simulation at `properties.real_time_factor` from now on."""
+        self._physics = properties
+        self._pacer = Pacer(properties.real_time_factor)
 
     def pause(self):
         self._running.clear()
@@ -149,7 +206,7 @@ class SimNode:
         with self._lock:
             self._world.reset_world()
             self._outputs.forget_motion()
-            self._trail.clear()
+            self._trails.clear()
 
     def reset_simulation(self):
         """reset_world plus sim time back to 0 (/clock jumps back, as Gazebo's does)."""
@@ -157,7 +214,7 @@ class SimNode:
             self._world.reset_simulation()
             self._outputs.reset(self._world.time_s)
             self._trail_schedule.reset(self._world.time_s)
-            self._trail.clear()
+            self._trails.clear()
 
     def window_opened(self):
         self._window_open.set()
@@ -170,19 +227,19 @@ class SimNode:
         """Tell the sensors a model was moved by a service (call with the world locked)."""
         self._outputs.forget_motion()
 
-    def _on_cmd_vel(self, message):
+    def _on_cmd_vel(self, message, robot):
         linear, angular = message.linear.x, message.angular.z
         reason = validate_command(linear, angular)
         if reason is not None:
             rospy.logwarn_throttle(WARNING_THROTTLE_S, f"cmd_vel ignored: {reason}; keeping the previous command")
             return
         with self._lock:
-            self._world.robot.set_command(linear, angular)
+            robot.set_command(linear, angular)
 
     def _on_snapshot(self, _request):
         from tb3_sim.view.renderer import save_png  # Qt is loaded on the first snapshot only (or by the window)
         with self._lock:
-            scene = scene_of(self._world, self._trail, self._scan.for_view(self._world))
+            scene = scene_of(self._world, self._trails, self._scan.for_view(self._world) if self._scan else None)
         try:
             save_png(scene, self.config.snapshot_path)
         except OSError as error:
@@ -200,7 +257,7 @@ class SimNode:
                 now_s = self._world.step()
                 outgoing = self._outputs.collect(self._world)
                 if self._trail_schedule.due(now_s):
-                    self._trail.add(*self._world.robot.pose[:2])
+                    self._trails.add(self._world.robots())
             try:
                 for publisher, message in outgoing:
                     publisher.publish(message)
@@ -267,8 +324,19 @@ def ensure_use_sim_time():
 def build_world(config):
     """The World the config describes; raises SimError (WorldFileError, ConfigError...) with a clear message."""
     description = load_world(config.world_path)
-    return World(description, Pose2D(config.x_pos, config.y_pos, config.yaw), config.robot_name,
+    return World(description, Pose2D(config.x_pos, config.y_pos, config.yaw),
+                 config.robot_name if config.spawn_robot else None, TURTLEBOT3_MODELS[config.model],
                  clamp_command=config.clamp_command)
+
+
+def _tf_prefix_param(namespace):
+    """The tf_prefix parameter found by searching up from `namespace` (as gazebo_ros's plugins look it up), or
+    None if there is none."""
+    master = rosgraph.Master(rospy.names.ns_join(namespace or "/", NODE_NAME))
+    try:
+        return master.getParam(master.searchParam("tf_prefix"))
+    except (rosgraph.MasterException, OSError):
+        return None
 
 
 def main():
@@ -286,8 +354,9 @@ def main():
             sys.exit(1)
         node = SimNode(config, world)
         keep_registered(on_reregistered=ensure_use_sim_time)
-        rospy.loginfo(f"tb3_sim: world '{world.description.name}', robot '{config.robot_name}' at "
-                      f"({config.x_pos}, {config.y_pos}, yaw {config.yaw}), real_time_factor "
+        robot = (f"robot '{config.robot_name}' ({config.model}) at ({config.x_pos}, {config.y_pos}, yaw {config.yaw})"
+                 if config.spawn_robot else "no robot (spawn one with spawn_model -urdf)")
+        rospy.loginfo(f"tb3_sim: world '{world.description.name}', {robot}, real_time_factor "
                       f"{config.real_time_factor:g}{', paused' if config.paused else ''}")
         if not config.headless and has_display():
             run_with_window(node, stop)

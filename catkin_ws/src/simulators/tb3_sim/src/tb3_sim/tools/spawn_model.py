@@ -3,9 +3,11 @@ command line over /gazebo/spawn_sdf_model and spawn_urdf_model (tb3_sim or Gazeb
 
 Options as gazebo_ros (noetic): -urdf | -sdf; -file FILE | -param PARAM | -stdin; -model NAME (required);
 -x -y -z -R -P -Y (m, rad; z, roll and pitch are sent, and tb3_sim ignores them); -reference_frame FRAME;
--gazebo_namespace NS (default /gazebo); -robot_namespace NS; -unpause; -wait MODEL (wait until that model
-exists first); -timeout S (seconds to wait for the service, default 10). Accepted and ignored, as they have no
-meaning here: -J JOINT POSITION (repeatable), -package_to_model, -b. -database is refused (no model database).
+-gazebo_namespace NS (default /gazebo); -robot_namespace NS (default: the namespace spawn_model runs in, as
+gazebo_ros's: a TurtleBot3 spawned in <group ns="tb3_0"> gets /tb3_0/cmd_vel, /tb3_0/odom, ...); -unpause;
+-wait MODEL (wait until that model exists first); -timeout S (seconds to wait for the service, default 10).
+Accepted and ignored, as they have no meaning here: -J JOINT POSITION (repeatable), -package_to_model, -b.
+-database is refused (no model database).
 Prints Gazebo's "Spawn status: ..." line; exits 1 with "Spawn service failed. Exiting." when the spawn fails.
 """
 
@@ -39,7 +41,8 @@ def parser():
         result.add_argument("-" + axis, type=float, default=0.0, help=f"initial pose: {axis}")
     result.add_argument("-reference_frame", default="", help="frame of the initial pose (a model, or world)")
     result.add_argument("-gazebo_namespace", default="/gazebo", help="namespace of the services")
-    result.add_argument("-robot_namespace", default="", help="passed on in the request")
+    result.add_argument("-robot_namespace", default=rospy.get_namespace(),
+                        help="namespace of the robot's topics (default: the namespace spawn_model runs in)")
     result.add_argument("-unpause", action="store_true", help="unpause physics after spawning")
     result.add_argument("-wait", metavar="MODEL", help="wait until MODEL exists before spawning")
     result.add_argument("-timeout", type=float, default=DEFAULT_TIMEOUT_S, help="seconds to wait for the service")

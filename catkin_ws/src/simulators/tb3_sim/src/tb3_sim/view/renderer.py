@@ -1,4 +1,4 @@
-"""Top-down drawing of a Scene with Qt's QPainter: walls, models, the robot, its trail and the laser rays.
+"""Top-down drawing of a Scene with Qt's QPainter: walls, models, the robots, their trails and the laser rays.
 
 `paint(painter, scene, view)` draws on any QPaintDevice (the snapshot's QImage now; an interactive window's
 paintEvent later), `render_image(scene, ...)` returns a QImage and `save_png(...)` writes one. No QApplication
@@ -6,7 +6,7 @@ is needed to paint on a QImage, in any thread; set QT_QPA_PLATFORM=offscreen whe
 Nothing here knows about physics or ROS: the scene is a copy of the world's state.
 
 Picture: world +x to the right, +y up; a 1 m grid; static geometry grey, dynamic models brown, static models
-dark brown, the robot dark blue with a yellow heading mark, the trail light blue, laser rays translucent red
+dark brown, robots dark blue with a yellow heading mark, trails light blue, the first robot's laser rays translucent red
 ending at red hit dots.
 """
 
@@ -74,7 +74,7 @@ class View:
 
 
 def _scene_extent_points(scene):
-    xs, ys = [scene.robot_pose.x], [scene.robot_pose.y]
+    xs, ys = [r.pose.x for r in scene.robots] or [0.0], [r.pose.y for r in scene.robots] or [0.0]
     for shape in scene.static_shapes:
         if isinstance(shape, Segment):
             points = (shape.start, shape.end)
@@ -88,7 +88,7 @@ def _scene_extent_points(scene):
     for model in scene.models:
         xs.append(model.pose.x)
         ys.append(model.pose.y)
-    for stroke in scene.trail:
+    for stroke in (stroke for robot in scene.robots for stroke in robot.trail):
         xs.extend(p[0] for p in stroke)
         ys.extend(p[1] for p in stroke)
     return xs, ys
@@ -122,7 +122,7 @@ def paint(painter, scene, view):
     _paint_models(painter, scene, view)
     _paint_trail(painter, scene, view)
     _paint_scan(painter, scene, view)
-    _paint_robot(painter, scene, view)
+    _paint_robots(painter, scene, view)
 
 
 def _paint_grid(painter, view):
@@ -169,7 +169,7 @@ def _paint_models(painter, scene, view):
 def _paint_trail(painter, scene, view):
     painter.setPen(QPen(TRAIL, 2.0))
     painter.setBrush(Qt.NoBrush)
-    for stroke in scene.trail:
+    for stroke in (stroke for robot in scene.robots for stroke in robot.trail):
         if len(stroke) > 1:
             painter.drawPolyline(QPolygonF([view.point(x, y) for x, y in stroke]))
 
@@ -188,11 +188,12 @@ def _paint_scan(painter, scene, view):
         painter.drawEllipse(view.point(x, y), 2.0, 2.0)
 
 
-def _paint_robot(painter, scene, view):
-    pose = scene.robot_pose
-    painter.setPen(Qt.NoPen)
-    painter.setBrush(QBrush(ROBOT_FILL))
-    for outline in scene.robot_outlines:
-        painter.drawPolygon(QPolygonF([view.point(*pose.compose(x, y)) for x, y in outline]))
-    painter.setPen(QPen(HEADING, 3.0))
-    painter.drawLine(QLineF(view.point(pose.x, pose.y), view.point(*pose.compose(HEADING_LENGTH_M, 0.0))))
+def _paint_robots(painter, scene, view):
+    for robot in scene.robots:
+        pose = robot.pose
+        painter.setPen(Qt.NoPen)
+        painter.setBrush(QBrush(ROBOT_FILL))
+        for outline in robot.outlines:
+            painter.drawPolygon(QPolygonF([view.point(*pose.compose(x, y)) for x, y in outline]))
+        painter.setPen(QPen(HEADING, 3.0))
+        painter.drawLine(QLineF(view.point(pose.x, pose.y), view.point(*pose.compose(HEADING_LENGTH_M, 0.0))))

@@ -1,7 +1,7 @@
 """What a view draws, copied out of the world between two physics steps (so drawing never races physics).
 
-A `Scene` is immutable plain data in the world frame (metres, radians). `Trail` records where the robot has
-been, for the view only.
+A `Scene` is immutable plain data in the world frame (metres, radians). `Trail` records where a robot has been,
+`Trails` does so for every robot, for the view only.
 """
 
 import math
@@ -12,7 +12,6 @@ import numpy as np
 
 from tb3_sim.core.geometry import Pose2D
 from tb3_sim.core.lidar import ScanResult, beam_angles
-from tb3_sim.core.waffle import waffle_footprint
 
 # Trail: a point every 1 cm at most, 5000 points (50 m of driving); a jump of more than 0.5 m between two
 # points (a teleport or a reset) starts a new stroke instead of drawing a line across the world.
@@ -57,6 +56,26 @@ class Trail:
         return tuple(tuple(stroke) for stroke in self._strokes if stroke)
 
 
+class Trails:
+    """A Trail per robot, by robot name."""
+
+    def __init__(self):
+        self._trails = {}
+
+    def add(self, robots):
+        """Record every robot of `robots` (core.robot.Robot objects) where it is now."""
+        for robot in robots:
+            self._trails.setdefault(robot.name, Trail()).add(*robot.pose[:2])
+
+    def strokes(self, name):
+        """The strokes of the robot `name` (none if it has no trail yet)."""
+        trail = self._trails.get(name)
+        return trail.strokes() if trail is not None else ()
+
+    def clear(self):
+        self._trails.clear()
+
+
 @dataclass(frozen=True)
 class ModelView:
     """A box or cylinder model to draw: `shape` (shapes.Box or shapes.Cylinder) at `pose`."""
@@ -68,15 +87,23 @@ class ModelView:
 
 
 @dataclass(frozen=True)
+class RobotView:
+    """A robot to draw: its name, pose, outlines (in base_footprint) and trail strokes."""
+
+    name: str
+    pose: Pose2D
+    outlines: Tuple
+    trail: Tuple
+
+
+@dataclass(frozen=True)
 class Scene:
-    """Everything a top-down view needs: static shapes (shapes.Segment/Polygon/Circle), models, the robot's
-    pose and outlines (in base_footprint), trail strokes, and the latest scan with its origin (or None)."""
+    """Everything a top-down view needs: static shapes (shapes.Segment/Polygon/Circle), models, robots, and the
+    first robot's latest scan with its origin (or None)."""
 
     static_shapes: Tuple
     models: Tuple[ModelView, ...]
-    robot_pose: Pose2D
-    robot_outlines: Tuple
-    trail: Tuple
+    robots: Tuple[RobotView, ...]
     scan: Optional[ScanResult] = None
     scan_origin: Optional[Pose2D] = None
 
@@ -96,8 +123,9 @@ def model_views(world):
     return tuple(ModelView(m.name, m.spec.shape, m.pose, m.spec.static) for m in world.models())
 
 
-def scene_of(world, trail, scan=None):
-    """A Scene of `world` now (call with the world locked); `scan` is the latest ScanResult or None."""
-    return Scene(static_shapes=world.description.static_shapes, models=model_views(world), robot_pose=world.robot.pose,
-                 robot_outlines=waffle_footprint(), trail=trail.strokes(), scan=scan,
+def scene_of(world, trails, scan=None):
+    """A Scene of `world` now (call with the world locked); `trails` a Trails; `scan` is the first robot's latest
+    ScanResult or None."""
+    robots = tuple(RobotView(r.name, r.pose, r.model.footprint(), trails.strokes(r.name)) for r in world.robots())
+    return Scene(static_shapes=world.description.static_shapes, models=model_views(world), robots=robots, scan=scan,
                  scan_origin=world.robot.scan_pose() if scan is not None else None)

@@ -1,7 +1,7 @@
 """The interactive top-down window (Qt): the snapshot's picture, repainted at REPAINT_HZ, plus the box tool.
 
 Mouse: left click on the floor places a 0.3 m box; left drag moves a box or cylinder; right click deletes one
-(see box_tool). The view fits the world when the window opens or is resized, and again when the robot leaves
+(see box_tool). The view fits the world when the window opens or is resized, and again when a robot leaves
 it. The window reads the world through `scene_source()` (a Scene copied under the world lock) and edits it
 through a BoxTool, so it never touches physics directly; closing it calls `on_close()`.
 """
@@ -33,10 +33,10 @@ class SimWindow(QWidget):
         self._timer.start(int(1000 / REPAINT_HZ))
 
     def view_for(self, scene):
-        """The current view, refitted if the window size changed or the robot left the picture."""
+        """The current view, refitted if the window size changed or a robot left the picture."""
         view = self._view
         if (view is None or (view.width_px, view.height_px) != (self.width(), self.height())
-                or not view.contains(scene.robot_pose.x, scene.robot_pose.y)):
+                or not all(view.contains(robot.pose.x, robot.pose.y) for robot in scene.robots)):
             self._view = View.fit(scene, self.width(), self.height())
         return self._view
 

@@ -3,6 +3,6 @@ camera) behind one seam."""
 
 from tb3_sim.ros.outputs.output import Output, Topic
 from tb3_sim.ros.outputs.publisher import OutputPublisher
-from tb3_sim.ros.outputs.registry import registered_outputs
+from tb3_sim.ros.outputs.registry import robot_outputs, world_outputs
 
-__all__ = ["Output", "OutputPublisher", "Topic", "registered_outputs"]
+__all__ = ["Output", "OutputPublisher", "Topic", "robot_outputs", "world_outputs"]

@@ -1,14 +1,18 @@
-"""The Waffle's RealSense R200 as Gazebo's openni_kinect plugin publishes it (turtlebot3_waffle.gazebo.xacro):
+"""A robot's camera as Gazebo's camera plugins publish it: the Waffle's RealSense R200 (openni_kinect plugin,
+turtlebot3_waffle.gazebo.xacro) and the Waffle Pi's Raspberry Pi camera (camera plugin, RGB only); the Burger
+has none. Topics (in the robot's namespace):
 
 - /camera/rgb/image_raw (sensor_msgs/Image, rgb8) and /camera/rgb/camera_info;
 - /camera/rgb/image_raw/compressed (sensor_msgs/CompressedImage): JPEG at quality 80 with the format string
   compressed_image_transport writes for an rgb8 image ("rgb8; jpeg compressed bgr8"); Debian has no Python
   image_transport plugins, so the simulator publishes this topic itself;
-- /camera/depth/image_raw (sensor_msgs/Image, 32FC1, metres along the optical axis; NaN where nothing is hit and
-  outside the plugin's 0.4..5.0 m band, as Gazebo's Waffle publishes it) and /camera/depth/camera_info.
-All in frame camera_rgb_optical_frame (the plugin's frameName, also for depth: one sensor, one viewpoint), at
-`rate_hz` of sim time (30 by default), 1920x1080 by default with a horizontal field of view of 1.3439 rad
-(camera_info as Gazebo computes it: see core.camera).
+- the R200 only: /camera/depth/image_raw (sensor_msgs/Image, 32FC1, metres along the optical axis; NaN where
+  nothing is hit and outside the plugin's 0.4..5.0 m band, as Gazebo's Waffle publishes it) and
+  /camera/depth/camera_info.
+All in frame camera_rgb_optical_frame (the plugin's frameName, also for depth: one sensor, one viewpoint; with the
+robot's tf_prefix), at the sensor's rate of sim time (30 Hz), size and horizontal field of view (R200 1920x1080,
+1.3439 rad; Pi camera 640x480, 1.085595 rad), as core.turtlebot3 lists them; camera_info as Gazebo computes it
+(see core.camera).
 Images are queued (see output.Topic): a subscriber that cannot keep up misses frames, the simulation does not
 slow down. Lazy: nothing is rendered while no image topic has a subscriber; a camera_info subscriber alone gets
 camera_info without a render (Gazebo publishes it only with images). Depth is rendered only while someone takes
@@ -25,22 +29,13 @@ from sensor_msgs.msg import CameraInfo, CompressedImage, Image
 from tb3_sim.core.camera import (
     DISTORTION_MODEL,
     IDENTITY_RECTIFICATION,
-    R200_DEPTH_CUTOFF_MAX_M,
-    R200_DEPTH_CUTOFF_MIN_M,
-    R200_HACK_BASELINE_M,
-    R200_HFOV_RAD,
     ZERO_DISTORTION,
     CameraIntrinsics,
     CameraRenderer,
     CameraScene,
 )
 from tb3_sim.core.materials import FLOOR_RGB, SKY_RGB
-from tb3_sim.core.waffle import (
-    WAFFLE_CAMERA_HEIGHT_M,
-    WAFFLE_CAMERA_OPTICAL_FRAME,
-    WAFFLE_CAMERA_X_M,
-    WAFFLE_CAMERA_Y_M,
-)
+from tb3_sim.core.turtlebot3 import CAMERA_OPTICAL_FRAME
 from tb3_sim.ros import messages
 from tb3_sim.ros.outputs.output import Output, Topic
 
@@ -48,12 +43,11 @@ from tb3_sim.ros.outputs.output import Output, Topic
 JPEG_QUALITY = 80
 JPEG_FORMAT = "rgb8; jpeg compressed bgr8"
 
-RGB_TOPIC = "/camera/rgb/image_raw"
-RGB_INFO_TOPIC = "/camera/rgb/camera_info"
-COMPRESSED_TOPIC = "/camera/rgb/image_raw/compressed"
-DEPTH_TOPIC = "/camera/depth/image_raw"
-DEPTH_INFO_TOPIC = "/camera/depth/camera_info"
-IMAGE_TOPICS = {RGB_TOPIC, COMPRESSED_TOPIC, DEPTH_TOPIC}
+RGB_TOPIC = "camera/rgb/image_raw"
+RGB_INFO_TOPIC = "camera/rgb/camera_info"
+COMPRESSED_TOPIC = "camera/rgb/image_raw/compressed"
+DEPTH_TOPIC = "camera/depth/image_raw"
+DEPTH_INFO_TOPIC = "camera/depth/camera_info"
 
 
 class CameraReading(NamedTuple):
@@ -65,35 +59,46 @@ class CameraReading(NamedTuple):
 
 
 class CameraOutput(Output):
-    lazy = True
-    frame_ids = (WAFFLE_CAMERA_OPTICAL_FRAME,)
+    """`robot`'s camera (`spec`, a turtlebot3.CameraSpec), named by `naming` (a RobotNaming); the image size and
+    rate are the spec's unless given."""
 
-    def __init__(self, width_px, height_px, rate_hz):
-        self.rate_hz = rate_hz
+    lazy = True
+
+    def __init__(self, robot, naming, spec, width_px=None, height_px=None, rate_hz=None):
+        self.rate_hz = rate_hz or spec.rate_hz
         super().__init__()
-        self.intrinsics = CameraIntrinsics(width_px, height_px, R200_HFOV_RAD, R200_HACK_BASELINE_M)
-        self.renderer = CameraRenderer(self.intrinsics, WAFFLE_CAMERA_HEIGHT_M, FLOOR_RGB, SKY_RGB,
-                                       depth_min_m=R200_DEPTH_CUTOFF_MIN_M, depth_max_m=R200_DEPTH_CUTOFF_MAX_M)
-        self.topics = (
-            Topic(RGB_TOPIC, Image, self._rgb_image, queued=True),
-            Topic(RGB_INFO_TOPIC, CameraInfo, self._camera_info),
-            Topic(COMPRESSED_TOPIC, CompressedImage, self._compressed_image, queued=True),
-            Topic(DEPTH_TOPIC, Image, self._depth_image, queued=True),
-            Topic(DEPTH_INFO_TOPIC, CameraInfo, self._camera_info),
-        )
+        self.robot = robot
+        self.spec = spec
+        self.frame_id = naming.frame(CAMERA_OPTICAL_FRAME)
+        self.frame_ids = (self.frame_id,)
+        self.intrinsics = CameraIntrinsics.of(spec, width_px, height_px)
+        depth_min_m, depth_max_m = spec.depth_range_m or (None, None)
+        self.renderer = CameraRenderer(self.intrinsics, spec.height_m, FLOOR_RGB, SKY_RGB, far_clip_m=spec.clip_far_m,
+                                       near_clip_m=spec.clip_near_m, depth_min_m=depth_min_m, depth_max_m=depth_max_m)
+        self._depth_topic = naming.topic(DEPTH_TOPIC)
+        topics = [
+            Topic(naming.topic(RGB_TOPIC), Image, self._rgb_image, queued=True),
+            Topic(naming.topic(RGB_INFO_TOPIC), CameraInfo, self._camera_info),
+            Topic(naming.topic(COMPRESSED_TOPIC), CompressedImage, self._compressed_image, queued=True),
+        ]
+        if spec.depth_range_m is not None:
+            topics += [Topic(self._depth_topic, Image, self._depth_image, queued=True),
+                       Topic(naming.topic(DEPTH_INFO_TOPIC), CameraInfo, self._camera_info)]
+        self.topics = tuple(topics)
+        self._image_topics = {topic.name for topic in self.topics if topic.queued}
 
     def read(self, world, now_s, wanted):
         rgb = depth = None
-        if wanted & IMAGE_TOPICS:
-            pose = world.robot.pose
-            x, y = pose.compose(WAFFLE_CAMERA_X_M, WAFFLE_CAMERA_Y_M)
-            rgb, depth = self.renderer.render(x, y, pose.yaw, camera_scene(world.obstacles()),
-                                              depth=DEPTH_TOPIC in wanted)
+        if wanted & self._image_topics:
+            pose = self.robot.pose
+            x, y = pose.compose(self.spec.x_m, self.spec.y_m)
+            rgb, depth = self.renderer.render(x, y, pose.yaw, camera_scene(world.obstacles(excluding=self.robot)),
+                                              depth=self._depth_topic in wanted)
         return CameraReading(now_s, rgb, depth)
 
     def _header(self, message, time_s):
         message.header.stamp = messages.stamp(time_s)
-        message.header.frame_id = WAFFLE_CAMERA_OPTICAL_FRAME
+        message.header.frame_id = self.frame_id
         return message
 
     def _rgb_image(self, reading):

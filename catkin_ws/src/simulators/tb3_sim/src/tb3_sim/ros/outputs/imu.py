@@ -1,4 +1,5 @@
-"""/imu at IMU_RATE_HZ = 100 Hz of sim time, in frame base_footprint (see messages).
+"""A robot's imu at IMU_RATE_HZ = 100 Hz of sim time, in frame base_footprint with the robot's tf_prefix (see
+messages).
 
 Gazebo's IMU plugin publishes on every 1 ms world update while subscribed; 100 Hz keeps it smooth for course code
 while leaving the Python message path cheap enough for faster-than-real-time runs. Lazy, as Gazebo's plugin: no
@@ -18,17 +19,21 @@ MAX_READING_GAP_S = 1.5 / IMU_RATE_HZ
 
 
 class ImuOutput(Output):
+    """`robot`'s IMU, named by `naming` (a RobotNaming)."""
+
     rate_hz = IMU_RATE_HZ
     lazy = True
-    frame_ids = (messages.IMU_FRAME,)
 
-    def __init__(self):
+    def __init__(self, robot, naming):
         super().__init__()
+        self.robot = robot
         self.imu = Imu(MAX_READING_GAP_S)
-        self.topics = (Topic("imu", ImuMessage, messages.imu_message),)
+        frame_id = naming.frame(messages.IMU_FRAME)
+        self.frame_ids = (frame_id,)
+        self.topics = (Topic(naming.topic("imu"), ImuMessage, lambda r: messages.imu_message(r, frame_id)),)
 
     def read(self, world, now_s, wanted):
-        robot = world.robot
+        robot = self.robot
         return self.imu.read(now_s, robot.pose, robot.twist_world)
 
     def reset(self, now_s):

@@ -1,6 +1,6 @@
-"""/odom, /tf (odom -> base_footprint) and /joint_states at 30 Hz of sim time: the diff-drive plugin's
+"""A robot's odom, /tf (odom -> base_footprint) and joint_states at 30 Hz of sim time: the diff-drive plugin's
 updateRate. Not lazy, as the plugin publishes whether or not anyone listens; a message is built only for a topic
-with subscribers. Frames: `odom` -> `base_footprint` (see messages)."""
+with subscribers. Frames: `odom` -> `base_footprint` with the robot's tf_prefix (see messages, robot_naming)."""
 
 from typing import NamedTuple, Tuple
 
@@ -24,18 +24,24 @@ class DriveReading(NamedTuple):
 
 
 class OdometryOutput(Output):
+    """`robot` (a core.robot.Robot) named by `naming` (a RobotNaming)."""
+
     rate_hz = DRIVE_UPDATE_RATE_HZ
     lazy = False
-    frame_ids = (messages.ODOM_FRAME, messages.BASE_FRAME)
 
-    def __init__(self):
+    def __init__(self, robot, naming):
         super().__init__()
+        self.robot = robot
+        frames = (naming.frame(messages.ODOM_FRAME), naming.frame(messages.BASE_FRAME))
+        self.frame_ids = frames
         self.topics = (
-            Topic("odom", Odometry, lambda r: messages.odometry_message(r.time_s, r.pose, r.twist_body)),
-            Topic("/tf", TFMessage, lambda r: messages.odom_tf_message(r.time_s, r.pose)),
-            Topic("joint_states", JointState, lambda r: messages.joint_state_message(r.time_s, r.wheel_angles)),
+            Topic(naming.topic("odom"), Odometry,
+                  lambda r: messages.odometry_message(r.time_s, r.pose, r.twist_body, *frames)),
+            Topic("/tf", TFMessage, lambda r: messages.odom_tf_message(r.time_s, r.pose, *frames)),
+            Topic(naming.topic("joint_states"), JointState,
+                  lambda r: messages.joint_state_message(r.time_s, r.wheel_angles)),
         )
 
     def read(self, world, now_s, wanted):
-        robot = world.robot
+        robot = self.robot
         return DriveReading(now_s, robot.pose, robot.twist_body, robot.drive.wheel_angles)

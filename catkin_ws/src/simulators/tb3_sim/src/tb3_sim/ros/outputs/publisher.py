@@ -13,8 +13,20 @@ class OutputPublisher:
     """The registered outputs (in publishing order) and one publisher per topic."""
 
     def __init__(self, outputs, make_publisher):
-        self.outputs = tuple(outputs)
-        self.publishers = {topic.name: make_publisher(topic) for output in self.outputs for topic in output.topics}
+        self._make_publisher = make_publisher
+        self.outputs = ()
+        self.publishers = {}
+        self.add(outputs)
+
+    def add(self, outputs, now_s=0.0):
+        """Publish `outputs` too (a robot joined at sim time `now_s`); topics of the same name share a publisher
+        (every robot's odometry goes out on the one /tf)."""
+        for output in outputs:
+            output.reset(now_s)
+            for topic in output.topics:
+                if topic.name not in self.publishers:
+                    self.publishers[topic.name] = self._make_publisher(topic)
+        self.outputs += tuple(outputs)
         # Per output, its (topic, publisher) pairs, split into outputs that run every physics step (/clock) and
         # periodic ones: collect() runs after every step, so it looks nothing up by name and asks the periodic
         # outputs only when the earliest of them is due.

@@ -1,6 +1,7 @@
 """The simulator's periodic outputs, in publishing order: one line per output.
 
-/clock comes first, so a subscriber on /use_sim_time has the new time before any message stamped with it.
+World outputs run once per simulator; robot outputs once per robot, named by its RobotNaming. /clock comes first,
+so a subscriber on /use_sim_time has the new time before any message stamped with it.
 """
 
 from tb3_sim.core.lidar import Lidar
@@ -13,14 +14,25 @@ from tb3_sim.ros.outputs.scan import ScanOutput
 from tb3_sim.ros.outputs.world_markers import WorldMarkersOutput
 
 
-def registered_outputs(config):
-    """A fresh instance of every output, set up from `config` (a ros.config.SimConfig)."""
+def world_outputs():
+    """A fresh instance of every output the world has once."""
     return [
         ClockOutput(),
-        OdometryOutput(),
-        ScanOutput(Lidar(config.seed, sees_low_objects=config.lidar_sees_low_objects)),
-        ImuOutput(),
         ModelStatesOutput(),
         WorldMarkersOutput(),
-        CameraOutput(config.camera_width, config.camera_height, config.camera_rate),
     ]
+
+
+def robot_outputs(config, robot, naming, index):
+    """A fresh instance of every output of `robot` (a core.robot.Robot), the `index`-th robot (its LiDAR noise
+    stream is the config's seed + index), set up from `config` (a ros.config.SimConfig)."""
+    outputs = [
+        OdometryOutput(robot, naming),
+        ScanOutput(robot, naming, Lidar(config.seed + index, sees_low_objects=config.lidar_sees_low_objects)),
+        ImuOutput(robot, naming),
+    ]
+    camera = robot.model.camera
+    if camera is not None:
+        outputs.append(CameraOutput(robot, naming, camera, config.camera_width, config.camera_height,
+                                    config.camera_rate))
+    return outputs

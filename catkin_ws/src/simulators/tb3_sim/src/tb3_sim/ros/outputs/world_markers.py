@@ -1,8 +1,9 @@
 """The world as a visualization_msgs/MarkerArray, so `rviz -d $(rospack find tb3_sim)/rviz/tb3_sim.rviz`
-shows the obstacles beside /scan and TF (there is no robot_description to draw a RobotModel from).
+shows the obstacles beside /scan and TF, also where no robot_description is loaded to draw a RobotModel from.
 
-Static walls and pillars (namespace "static"), the models with their current poses ("models") and the
-Waffle's collision box in base_footprint ("robot"), all in the odom frame, which is the world frame here.
+Static walls and pillars (namespace "static"), the models with their current poses ("models") and each robot's
+base collision box ("robots"), all in the odom frame, which is the world frame here (a single robot's odom;
+with several robots, each robot's prefixed odom coincides with it too).
 Published on `~world_markers` (/gazebo/world_markers), latched at start and again at MARKER_RATE_HZ (sim time)
 while someone subscribes, so moved, spawned and deleted models show up.
 """
@@ -13,7 +14,7 @@ from geometry_msgs.msg import Point
 from visualization_msgs.msg import Marker, MarkerArray
 
 from tb3_sim.core.shapes import Box, Polygon, Segment
-from tb3_sim.core.waffle import WAFFLE_BODY_HALF_WIDTH_M, WAFFLE_BODY_TOP_M, WAFFLE_BODY_X_MAX_M, WAFFLE_BODY_X_MIN_M
+from tb3_sim.core.turtlebot3 import BASE_JOINT_Z_M
 from tb3_sim.ros import messages
 from tb3_sim.ros.outputs.output import Output, Topic
 
@@ -24,7 +25,6 @@ STATIC_RGBA = (0.5, 0.5, 0.5, 1.0)
 MODEL_RGBA = (0.69, 0.47, 0.25, 1.0)
 ROBOT_RGBA = (0.12, 0.24, 0.55, 0.8)
 SEGMENT_WIDTH_M = 0.03
-BODY_BOTTOM_M = 0.010   # base_link is 1 cm above base_footprint
 
 
 def _marker(namespace, marker_id, kind, rgba, stamp, frame_id=FRAME_ID):
@@ -77,30 +77,38 @@ def _model_marker(model, marker_id, stamp):
     return marker
 
 
-def _robot_marker(stamp):
-    marker = _marker("robot", 0, Marker.CUBE, ROBOT_RGBA, stamp, frame_id="base_footprint")
-    marker.pose.position.x = (WAFFLE_BODY_X_MIN_M + WAFFLE_BODY_X_MAX_M) / 2.0
-    marker.pose.position.z = (BODY_BOTTOM_M + WAFFLE_BODY_TOP_M) / 2.0
-    marker.scale.x = WAFFLE_BODY_X_MAX_M - WAFFLE_BODY_X_MIN_M
-    marker.scale.y = 2.0 * WAFFLE_BODY_HALF_WIDTH_M
-    marker.scale.z = WAFFLE_BODY_TOP_M - BODY_BOTTOM_M
+def _robot_marker(robot, marker_id, stamp):
+    """The base box of `robot` (a MarkedModel whose shape is a turtlebot3.TurtleBot3Model), standing on the floor
+    from base_link's height (1 cm) up to the top of its base."""
+    model, pose = robot.shape, robot.pose
+    marker = _marker("robots", marker_id, Marker.CUBE, ROBOT_RGBA, stamp)
+    marker.text = robot.name
+    centre_x = (model.body_x_min_m + model.body_x_max_m) / 2.0
+    x, y = pose.compose(centre_x, 0.0)
+    _place(marker, x, y, pose.yaw, model.body_top_m - BASE_JOINT_Z_M)
+    marker.pose.position.z += BASE_JOINT_Z_M
+    marker.scale.x = model.body_x_max_m - model.body_x_min_m
+    marker.scale.y = 2.0 * model.body_half_width_m
+    marker.scale.z = model.body_top_m - BASE_JOINT_Z_M
     return marker
 
 
-def world_markers(static_shapes, models, stamp):
+def world_markers(static_shapes, models, robots, stamp):
     """A MarkerArray: DELETEALL first (so deleted models disappear), then the static shapes, the models
-    (objects with `name`, `shape` (Box or Cylinder) and `pose` (Pose2D)) and the robot's body."""
+    (MarkedModel: `name`, `shape` (Box or Cylinder) and `pose` (Pose2D)) and the robots' bodies (MarkedModel with
+    the robot's TurtleBot3Model as `shape`)."""
     clear = Marker()
     clear.action = Marker.DELETEALL
     markers = [clear]
     markers.extend(_static_marker(shape, i, stamp) for i, shape in enumerate(static_shapes))
     markers.extend(_model_marker(model, i, stamp) for i, model in enumerate(models))
-    markers.append(_robot_marker(stamp))
+    markers.extend(_robot_marker(robot, i, stamp) for i, robot in enumerate(robots))
     return MarkerArray(markers=markers)
 
 
 class MarkedModel(NamedTuple):
-    """What a model marker shows: its name, shape (Box or Cylinder) and world pose."""
+    """What a model marker shows: its name, shape (Box or Cylinder, or a robot's TurtleBot3Model) and world
+    pose."""
 
     name: str
     shape: object
@@ -110,13 +118,14 @@ class MarkedModel(NamedTuple):
 class WorldReading(NamedTuple):
     static_shapes: Tuple
     models: Tuple[MarkedModel, ...]
+    robots: Tuple[MarkedModel, ...]
     time_s: float
 
 
 class WorldMarkersOutput(Output):
     rate_hz = MARKER_RATE_HZ
     lazy = True
-    frame_ids = (FRAME_ID, "base_footprint")
+    frame_ids = (FRAME_ID,)
 
     def __init__(self):
         super().__init__()
@@ -124,8 +133,9 @@ class WorldMarkersOutput(Output):
 
     def read(self, world, now_s, wanted):
         models = tuple(MarkedModel(m.name, m.spec.shape, m.pose) for m in world.models())
-        return WorldReading(world.description.static_shapes, models, now_s)
+        robots = tuple(MarkedModel(r.name, r.model, r.pose) for r in world.robots())
+        return WorldReading(world.description.static_shapes, models, robots, now_s)
 
     @staticmethod
     def _markers(reading):
-        return world_markers(reading.static_shapes, reading.models, messages.stamp(reading.time_s))
+        return world_markers(reading.static_shapes, reading.models, reading.robots, messages.stamp(reading.time_s))
