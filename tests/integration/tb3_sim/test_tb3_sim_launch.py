@@ -10,7 +10,7 @@ import rosgraph
 import rospy
 from gazebo_msgs.srv import GetModelState, GetWorldProperties
 
-from roslab import RosProcess, wait_for_service, wait_until
+from roslab import RosProcess, wait_for_service, wait_for_topic, wait_until
 
 REPO_ROOT = Path(__file__).resolve().parents[3]
 
@@ -26,6 +26,7 @@ def launch(ros_master, tmp_path):
         process = RosProcess(["roslaunch", "--wait", *args], environment, tmp_path / f"launch{len(started)}.log")
         started.append(process)
         wait_for_service(ros_master.uri, "/gazebo/get_world_properties")
+        wait_for_topic(ros_master.uri, "/odom")   # the robot is there (spawn_model may come after the simulator)
         return process
 
     yield start

@@ -1,0 +1,74 @@
+"""`roslaunch turtlebot3_description turtlebot3_model.launch` (under a virtual display): the model from
+TURTLEBOT3_MODEL or waffle when it is unset, joint_state_publisher and robot_state_publisher giving every link a
+TF frame, and rviz loading rviz/model.rviz and staying up; model:= and multi_robot_name:= as in the original."""
+import time
+
+import pytest
+import rosgraph
+
+from roslab import RosProcess, wait_for_param, wait_until
+from roslab.graph import node_pid, subscribers
+
+STAYS_UP_S = 5.0
+TF_ECHO_DECIMALS = 0.0011
+
+
+@pytest.fixture
+def model_launch(ros_master, tmp_path):
+    """Start turtlebot3_model.launch with `args` under xvfb-run, TURTLEBOT3_MODEL unset; ended after the test."""
+    started = []
+
+    def start(*args):
+        # A previous test's parameters stay on the master, as after any roslaunch.
+        master = rosgraph.Master("/test", master_uri=ros_master.uri)
+        if master.hasParam("/robot_description"):
+            master.deleteParam("/robot_description")
+        env = {k: v for k, v in ros_master.env.items() if k not in ("TURTLEBOT3_MODEL", "QT_QPA_PLATFORM")}
+        command = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24", "roslaunch", "--wait", "turtlebot3_description",
+                   "turtlebot3_model.launch", *args]
+        process = RosProcess(command, env, tmp_path / "model{}.log".format(len(started)))
+        started.append(process)
+        wait_until(lambda: rviz_subscribed(ros_master.uri) or not process.running(), 90, "rviz to subscribe")
+        assert process.running(), process.output()[-3000:]
+        return process
+
+    yield start
+    for process in started:
+        process.stop()
+
+
+def rviz_subscribed(master_uri):
+    """A running rviz has loaded model.rviz: its LaserScan display subscribes to /scan. (The master may still
+    list an rviz that a previous test ended, until the new one registers under the same name.)"""
+    return any(node.startswith("/rviz") and responds(master_uri, node) for node in subscribers(master_uri, "/scan"))
+
+
+def responds(master_uri, node):
+    try:
+        return node_pid(master_uri, node) > 0
+    except (OSError, RuntimeError, rosgraph.MasterError):
+        return False
+
+
+def robot_description(master_uri):
+    return rosgraph.Master("/test", master_uri=master_uri).getParam("/robot_description")
+
+
+def test_default_model_is_waffle_and_everything_stays_up(model_launch, ros_master, tf_echo):
+    launch = model_launch()
+    assert '<robot name="turtlebot3_waffle"' in robot_description(ros_master.uri)
+    time.sleep(STAYS_UP_S)
+    assert launch.running(), launch.output()[-3000:]
+    for node in ("/rviz", "/robot_state_publisher", "/joint_state_publisher"):
+        assert responds(ros_master.uri, node), node
+    # The wheel frames need joint_state_publisher's /joint_states: robot_state_publisher publishes them on /tf.
+    translation, _ = tf_echo("base_footprint", "wheel_left_link")
+    assert translation == pytest.approx((0.0, 0.144, 0.033), abs=TF_ECHO_DECIMALS)
+
+
+def test_model_and_multi_robot_name_args(model_launch, ros_master, tf_echo):
+    model_launch("model:=burger", "multi_robot_name:=tb3_1")
+    wait_for_param(ros_master.uri, "/robot_description")
+    assert '<robot name="turtlebot3_burger"' in robot_description(ros_master.uri)
+    translation, _ = tf_echo("tb3_1/base_footprint", "tb3_1/base_scan")
+    assert translation == pytest.approx((-0.032, 0.0, 0.182), abs=TF_ECHO_DECIMALS)
