@@ -5,6 +5,8 @@
 Measures, each on a private roscore with the simulator started by its launch file (headless):
 - real-time factor at ~real_time_factor:=0 in turtlebot3_world with /scan and /odom subscribed (target >= 20x);
 - CPU of the simulator process at factor 1, same subscriptions, as % of one core (target <= 15%);
+- the same two with three robots (multi_turtlebot3.launch in turtlebot3_house, each robot's /scan and /odom
+  subscribed): factor 0 (target >= 20x) and CPU at factor 1 (target <= 25%);
 - one 360-beam scan in turtlebot3_world, from tb3_sim.tools.benchmark (target <= 0.5 ms);
 - wall time from `roslaunch` to the first /scan message (target <= 3 s);
 - with `rostopic hz` taking the default 1920x1080 /camera/rgb/image_raw at 30 Hz (it subscribes with AnyMsg, so
@@ -28,20 +30,27 @@ from tb3_sim.tools.benchmark import bench_scan  # noqa: E402
 MEASURE_S = 10.0
 CAMERA_TOPIC = "/camera/rgb/image_raw"
 WORLD_ARGS = ("world:=turtlebot3_world", "x_pos:=-2.0", "y_pos:=-0.5", "gui:=false")
+# (launch command, robot namespaces): one robot in turtlebot3_world, or multi_turtlebot3's three in the house.
+ONE_ROBOT = (("tb3_sim", "tb3_sim.launch", *WORLD_ARGS), ("",))
+THREE_ROBOTS = (("turtlebot3_gazebo", "multi_turtlebot3.launch", "gui:=false"), ("/tb3_0", "/tb3_1", "/tb3_2"))
 
 
-def _with_simulator(factor, measure, camera_subscriber=False):
-    """Start roscore + the simulator at `factor` with a probe on /scan and /odom (and, if `camera_subscriber`,
-    `rostopic hz` on the raw camera image); return measure(master, probe). The probe starts after the launch file
-    set /use_sim_time, so `probe.now()` is sim time."""
+def _with_simulator(factor, measure, camera_subscriber=False, robots=ONE_ROBOT):
+    """Start roscore + the simulator at `factor` (`robots`: ONE_ROBOT or THREE_ROBOTS) with a probe on each
+    robot's /scan and /odom (and, if `camera_subscriber`, `rostopic hz` on the raw camera image); return
+    measure(master, probe). The probe starts after the launch file set /use_sim_time, so `probe.now()` is sim
+    time."""
+    launch, namespaces = robots
     master = RosMaster(Path(tempfile.mkdtemp(prefix="tb3_bench_")))
     try:
-        master.roslaunch("tb3_sim", "tb3_sim.launch", f"real_time_factor:={factor}", *WORLD_ARGS)
+        master.roslaunch(*launch, f"real_time_factor:={factor}")
         wait_for_service(master.uri, "/gazebo/get_world_properties", 30)
         probe = master.probe()
-        probe.subscribe("/scan", "sensor_msgs/LaserScan")
-        probe.subscribe("/odom", "nav_msgs/Odometry")
-        probe.wait_for_message("/scan", 30)
+        for namespace in namespaces:
+            probe.subscribe(f"{namespace}/scan", "sensor_msgs/LaserScan")
+            probe.subscribe(f"{namespace}/odom", "nav_msgs/Odometry")
+        for namespace in namespaces:
+            probe.wait_for_message(f"{namespace}/scan", 30)
         if camera_subscriber:
             hz = master.start(["rostopic", "hz", CAMERA_TOPIC], "rostopic_hz")
             wait_until(lambda: "average rate" in hz.output(), 30, "rostopic hz to see camera images")
@@ -50,23 +59,23 @@ def _with_simulator(factor, measure, camera_subscriber=False):
         master.shutdown()
 
 
-def real_time_factor_unpaced():
-    """Sim seconds per wall second at ~real_time_factor:=0 with /scan and /odom subscribed."""
+def real_time_factor_unpaced(robots=ONE_ROBOT):
+    """Sim seconds per wall second at ~real_time_factor:=0 with each robot's /scan and /odom subscribed."""
     def measure(_master, probe):
         sim_start, wall_start = probe.now(), time.monotonic()
         time.sleep(MEASURE_S)
         return (probe.now() - sim_start) / (time.monotonic() - wall_start)
-    return _with_simulator(0, measure)
+    return _with_simulator(0, measure, robots=robots)
 
 
-def cpu_percent_at_real_time():
+def cpu_percent_at_real_time(robots=ONE_ROBOT):
     """CPU of the simulator process at factor 1, % of one core."""
     def measure(master, _probe):
         pid = node_pid(master.uri, "/gazebo")
         cpu_start, wall_start = cpu_seconds(pid), time.monotonic()
         time.sleep(MEASURE_S)
         return 100.0 * (cpu_seconds(pid) - cpu_start) / (time.monotonic() - wall_start)
-    return _with_simulator(1, measure)
+    return _with_simulator(1, measure, robots=robots)
 
 
 def _rtf_and_cpu(master, probe):
@@ -100,6 +109,10 @@ def run():
          20.0, ">="),
         ("CPU at real_time_factor 1 (/scan, /odom subscribed)", cpu_percent_at_real_time(), "% of a core",
          15.0, "<="),
+        ("real-time factor at factor 0, 3 robots (multi_turtlebot3, each /scan, /odom subscribed)",
+         real_time_factor_unpaced(THREE_ROBOTS), "x", 20.0, ">="),
+        ("CPU at factor 1, 3 robots (multi_turtlebot3, each /scan, /odom subscribed)",
+         cpu_percent_at_real_time(THREE_ROBOTS), "% of a core", 25.0, "<="),
         ("one 360-beam scan in turtlebot3_world", bench_scan() * 1e3, "ms", 0.5, "<="),
         ("roslaunch to first /scan", launch_to_first_scan_s(), "s", 3.0, "<="),
         ("real-time factor at factor 1, 1920x1080 camera subscribed", camera_rtf, "x", 0.95, ">="),

@@ -71,6 +71,18 @@ def test_world_launch_takes_the_original_args(launch):
     assert robot_position("turtlebot3_waffle") == pytest.approx((-1.5, 0.5))
 
 
+@pytest.mark.parametrize("launch_file", ["turtlebot3_empty_world.launch", "turtlebot3_world.launch"])
+def test_the_spawned_robot_answers_cmd_vel_with_odom_and_scan(launch, probe, launch_file):
+    launch("turtlebot3_gazebo", launch_file, "gui:=false", "real_time_factor:=4", TURTLEBOT3_MODEL="waffle")
+    probe.subscribe("/odom", "nav_msgs/Odometry")
+    probe.subscribe("/scan", "sensor_msgs/LaserScan")
+    x0 = probe.wait_for_message("/odom")["pose"]["pose"]["position"]["x"]
+    assert len(probe.wait_for_message("/scan")["ranges"]) == 360
+    probe.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.2}})
+    probe.wait_for_message("/odom", predicate=lambda m: m["pose"]["pose"]["position"]["x"] > x0 + 0.1)
+    probe.publish("/cmd_vel", "geometry_msgs/Twist", {})
+
+
 def test_real_time_factor_5_runs_10_sim_seconds_in_about_2_wall_seconds(launch, ros_master):
     launch("tb3_sim", "tb3_sim.launch", "real_time_factor:=5")
     world_properties = rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)

@@ -39,3 +39,21 @@ def test_rviz_loads_the_config_and_subscribes(sim):
     wait_until(lambda: rviz_subscribed(sim.uri) or not rviz.running(), 60, "rviz to subscribe")
     assert rviz.running(), rviz.output()[-2000:]
     assert rviz_subscribed(sim.uri)
+
+
+def test_turtlebot3_gazebo_rviz_shows_the_robot_model_with_turning_wheels(sim):
+    """turtlebot3_gazebo_rviz.launch: robot_state_publisher turns /joint_states into the wheels' TF, and rviz
+    (with its RobotModel display) subscribes to the scan."""
+    launch = sim.start(["env", "-u", "QT_QPA_PLATFORM", "xvfb-run", "-a", "-s", "-screen 0 1024x768x24",
+                        "roslaunch", "--wait", "turtlebot3_gazebo", "turtlebot3_gazebo_rviz.launch", "model:=waffle"],
+                       "gazebo_rviz")
+    wait_until(lambda: any(n.startswith("/rviz") for n in subscribers(sim.uri, "/scan")) or not launch.running(), 60,
+               "rviz to subscribe to /scan")
+    assert launch.running(), launch.output()[-2000:]
+    probe = sim.probe()
+    probe.subscribe("/tf", "tf2_msgs/TFMessage")
+    wheel = probe.wait_for_message("/tf", predicate=lambda m: any(
+        t["child_frame_id"] == "wheel_left_link" for t in m["transforms"]))
+    parents = {t["header"]["frame_id"] for t in wheel["transforms"] if t["child_frame_id"] == "wheel_left_link"}
+    assert parents == {"base_link"}
+    launch.stop()
