@@ -129,11 +129,12 @@ def test_rates_in_sim_time(probe, topic, rate_hz):
     assert mean_period(stamps(entries)) == pytest.approx(1.0 / rate_hz, rel=0.02)
 
 
-def test_clock_advances_in_5_ms_steps(probe):
+def test_clock_ticks_at_100_hz_of_sim_time_on_whole_physics_steps(probe):
     times = [entry["msg"]["clock"] for entry in probe.collect("/clock", 0.5)]
-    steps = [round((b - a) / 0.005, 6) for a, b in zip(times, times[1:])]
-    assert all(step == int(step) > 0 for step in steps)
-    assert steps.count(1) > 0.9 * len(steps), "a busy machine may drop a few /clock messages, not many"
+    ticks = [round((b - a) / 0.01, 6) for a, b in zip(times, times[1:])]
+    assert all(tick == int(tick) > 0 for tick in ticks), "every /clock is a whole number of 10 ms ticks on"
+    assert all(round(t / 0.005, 6) == int(round(t / 0.005, 6)) for t in times), "on whole 5 ms physics steps"
+    assert ticks.count(1) > 0.9 * len(ticks), "a busy machine may drop a few /clock messages, not many"
 
 
 def test_cmd_vel_drives_the_robot_along_its_heading(probe):

@@ -92,6 +92,15 @@ def test_real_time_factor_5_runs_10_sim_seconds_in_about_2_wall_seconds(launch, 
     assert 1.0 < elapsed < 6.0
 
 
+@pytest.mark.parametrize("args, clock_rate", [
+    ((), None), (("use_clock_frequency:=true", "pub_clock_frequency:=50"), 50.0)])
+def test_empty_world_takes_gazebos_clock_frequency_args(ros_master, args, clock_rate):
+    dump = subprocess.run(["roslaunch", "--dump-params", "gazebo_ros", "empty_world.launch", *args],
+                          env=ros_master.env, capture_output=True, text=True, timeout=60).stdout
+    assert "/gazebo/spawn_robot: false" in dump
+    assert ("/gazebo/clock_rate: 100.0" if clock_rate is None else f"/gazebo/clock_rate: {clock_rate}") in dump
+
+
 @pytest.mark.parametrize("alias", ["tb3_empty_world", "tb3_world"])
 def test_course_aliases_exist(alias):
     result = subprocess.run(["bash", "-c", f"source scripts/env.sh >/dev/null && alias {alias}"], cwd=REPO_ROOT,

@@ -12,6 +12,9 @@ def test_defaults():
     assert (config.x_pos, config.y_pos, config.yaw) == (0.0, 0.0, 0.0)
     assert config.robot_name == "turtlebot3_waffle"
     assert config.real_time_factor == 1.0
+    assert (config.clock_rate, config.spawn_robot, config.model, config.robot_name) == (
+        100.0, True, "waffle", "turtlebot3_waffle")
+    assert (config.camera_width, config.camera_height, config.camera_rate) == (None, None, None)
     assert not config.paused and not config.headless and config.publish_static_tf
     assert config.snapshot_path == "/tmp/tb3_sim.png"
 
@@ -41,6 +44,9 @@ def test_unknown_world_lists_the_shipped_ones():
     ({"x_pos": "left"}, r"~x_pos must be a finite number, got 'left'"),
     ({"yaw": float("nan")}, r"~yaw must be a finite number"),
     ({"real_time_factor": -1}, r"~real_time_factor must be >= 0.0, got -1"),
+    ({"clock_rate": -5}, r"~clock_rate must be >= 0.0, got -5"),
+    ({"model": "wafle"}, r"~model must be one of burger, waffle, waffle_pi, got 'wafle'"),
+    ({"spawn_robot": "no"}, r"~spawn_robot must be true or false, got 'no'"),
     ({"seed": 1.5}, r"~seed must be an integer, got 1.5"),
     ({"paused": "yes"}, r"~paused must be true or false, got 'yes'"),
     ({"robot_name": "my robot"}, r"~robot_name must be a non-empty string without spaces"),

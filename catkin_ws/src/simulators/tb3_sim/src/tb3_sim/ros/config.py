@@ -11,6 +11,7 @@ Private parameters (all optional; see `tb3_sim.ros.node` for what each one does)
     ~robot_name              turtlebot3_<model>  the robot's model name in /gazebo/* services
     ~seed                    0          LiDAR noise seed (int)
     ~real_time_factor        1.0        sim seconds per wall second; any value > 0, or 0 = as fast as possible
+    ~clock_rate              100.0      /clock messages per second of sim time; 0 = after every physics step
     ~lidar_sees_low_objects  false      true: the scan also sees models lower than the scan plane (0.132 m on a
                                         Waffle)
     ~clamp_command           false      true: clamp cmd_vel to the model's limits (Waffle 0.26 m/s, 1.82 rad/s;
@@ -37,6 +38,8 @@ DEFAULT_WORLD = "empty"
 DEFAULT_SNAPSHOT_PATH = "/tmp/tb3_sim.png"
 WORLD_FILE_SUFFIX = ".yaml"
 GAZEBO_WORLD_SUFFIX = ".world"
+# gazebo_ros's pub_clock_frequency default: see outputs.clock for why /clock is not sent after every step.
+DEFAULT_CLOCK_RATE_HZ = 100.0
 CAMERA_SIZE_RANGE_PX = (16, 4096)
 MAX_CAMERA_RATE_HZ = 1000.0
 
@@ -54,6 +57,7 @@ class SimConfig:
     robot_name: str = DEFAULT_MODEL.robot_name
     seed: int = 0
     real_time_factor: float = 1.0
+    clock_rate: float = DEFAULT_CLOCK_RATE_HZ
     lidar_sees_low_objects: bool = False
     clamp_command: bool = False
     paused: bool = False
@@ -104,6 +108,7 @@ def config_from_params(params, worlds_dir):
         robot_name=reader.name("robot_name", TURTLEBOT3_MODELS[model].robot_name),
         seed=reader.integer("seed", 0),
         real_time_factor=reader.number("real_time_factor", 1.0, minimum=0.0),
+        clock_rate=reader.number("clock_rate", DEFAULT_CLOCK_RATE_HZ, minimum=0.0),
         lidar_sees_low_objects=reader.flag("lidar_sees_low_objects", False),
         clamp_command=reader.flag("clamp_command", False),
         paused=reader.flag("paused", False),

@@ -17,7 +17,8 @@ Publishes: `odom` (nav_msgs/Odometry), /tf odom -> base_footprint and `joint_sta
   camera's `camera/rgb/image_raw`, `camera/rgb/image_raw/compressed`, `camera/rgb/camera_info` and on a Waffle
   `camera/depth/image_raw` and `camera/depth/camera_info` at the camera's rate (30 Hz, only while subscribed; see
   outputs.camera); its fixed joints on /tf_static (latched) unless ~publish_static_tf is false.
-Once: /clock every physics step (5 ms of sim time); /gazebo/model_states at 100 Hz while subscribed;
+Once: /clock at ~clock_rate (100 Hz of sim time; 0: every 5 ms physics step, see outputs.clock);
+  /gazebo/model_states at 100 Hz while subscribed;
   /gazebo/set_model_state (subscribed, gazebo_msgs/ModelState); ~world_markers (visualization_msgs/MarkerArray,
   latched, and again at 2 Hz while subscribed: walls, models, the robots' bodies, for rviz/tb3_sim.rviz). All
   rates are in simulated time; each periodic output is one object registered in tb3_sim.ros.outputs.registry.
@@ -27,8 +28,8 @@ Services: /gazebo/{reset_world, reset_simulation, pause_physics, unpause_physics
   and ~snapshot (std_srvs/Empty): write a top-down PNG of the world (walls, models, robot, its trail, the
   latest laser rays; see renderer) to ~snapshot_path; an unwritable path fails the call with the reason.
 Parameters: see tb3_sim.ros.config (~world, ~spawn_robot, ~model, ~x_pos, ~y_pos, ~yaw, ~robot_name, ~seed,
-  ~real_time_factor, ~lidar_sees_low_objects, ~clamp_command, ~paused, ~headless, ~snapshot_path, ~publish_static_tf,
-  ~camera_width, ~camera_height, ~camera_rate).
+  ~real_time_factor, ~clock_rate, ~lidar_sees_low_objects, ~clamp_command, ~paused, ~headless, ~snapshot_path,
+  ~publish_static_tf, ~camera_width, ~camera_height, ~camera_rate).
 /use_sim_time is set to true before the node starts if it is absent, as gazebo_ros does. If roscore is
 restarted, the node registers everything again with the new master and sets /use_sim_time there too
 (master_reconnect).
@@ -39,7 +40,8 @@ both. Without a display the node is headless with identical ROS behaviour.
 
 Differences from Gazebo, on purpose:
 - Physics is 2D (Box2D) with 5 ms steps: objects stand on the floor, z, roll and pitch are always 0, spawned
-  models are single boxes, cylinders or spheres; /clock advances 5 ms per step instead of 1 ms.
+  models are single boxes, cylinders or spheres; physics steps 5 ms instead of 1 ms, and /clock goes out at
+  ~clock_rate (100 Hz) instead of after every step (gazebo_ros's pub_clock_frequency).
 - /imu and /gazebo/model_states go out at 100 Hz instead of on every 1 ms world update.
 - /tf_static carries each robot's fixed joints (robot_state_publisher's job in Gazebo launches, which may run
   beside it: both publish the same transforms) unless ~publish_static_tf is false; the IMU message is in
@@ -118,7 +120,7 @@ class SimNode:
             self._running.set()
         self._physics = PhysicsProperties.for_pacing(world.step_s, config.real_time_factor)
         self._pacer = Pacer(config.real_time_factor)
-        self._outputs = OutputPublisher(world_outputs(), output_publisher)
+        self._outputs = OutputPublisher(world_outputs(config), output_publisher)
         self._namings = {}        # robot name -> RobotNaming
         self._cmd_vel = []        # one Subscriber per robot
         self._static_transforms = ()

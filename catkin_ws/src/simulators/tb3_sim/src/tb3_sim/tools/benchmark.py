@@ -21,10 +21,10 @@ def _turtlebot3_world():
 def bench_scan(repeats=2000):
     """Mean wall seconds for one 360-beam scan in turtlebot3_world from the launch spawn pose (target 0.5 ms)."""
     world, lidar = _turtlebot3_world(), Lidar()
-    lidar.read(world, world.time_s)
+    lidar.read(world, world.robot, world.time_s)
     start = time.perf_counter()
     for _ in range(repeats):
-        lidar.read(world, world.time_s)
+        lidar.read(world, world.robot, world.time_s)
     return (time.perf_counter() - start) / repeats
 
 

@@ -14,10 +14,10 @@ from tb3_sim.ros.outputs.scan import ScanOutput
 from tb3_sim.ros.outputs.world_markers import WorldMarkersOutput
 
 
-def world_outputs():
-    """A fresh instance of every output the world has once."""
+def world_outputs(config):
+    """A fresh instance of every output the world has once, set up from `config` (a ros.config.SimConfig)."""
     return [
-        ClockOutput(),
+        ClockOutput(config.clock_rate),
         ModelStatesOutput(),
         WorldMarkersOutput(),
     ]
