@@ -29,7 +29,21 @@ def demo_run(tmp_path_factory):
     env.pop("DISPLAY", None)
     result = subprocess.run([str(REPO_ROOT / "scripts" / "demo"), "--rtf", "3"], env=env, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True, timeout=600, start_new_session=True)
+    result.master_uri = env["ROS_MASTER_URI"]
     return result
+
+
+def processes_using(master_uri):
+    """Pids of the processes whose environment points at `master_uri` (the demo's roscore and nodes)."""
+    marker = ("ROS_MASTER_URI=" + master_uri).encode()
+    pids = []
+    for environ in Path("/proc").glob("[0-9]*/environ"):
+        try:
+            if marker in environ.read_bytes().split(b"\0"):
+                pids.append(int(environ.parent.name))
+        except OSError:   # gone meanwhile, or not ours to read
+            pass
+    return pids
 
 
 def test_demo_exits_0_with_the_table(demo_run):
@@ -65,5 +79,6 @@ def test_demo_prints_no_false_warnings(demo_run):
 
 
 def test_demo_leaves_no_process_behind(demo_run):
-    leftover = subprocess.run(["pgrep", "-f", "week4_demo.launch"], stdout=subprocess.PIPE, text=True)
-    assert leftover.stdout.strip() == ""
+    """No process of the demo's (they all carry its private ROS_MASTER_URI) outlives it; other test modules' ROS
+    processes, running in parallel, are not the demo's."""
+    assert processes_using(demo_run.master_uri) == []

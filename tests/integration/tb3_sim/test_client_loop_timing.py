@@ -1,6 +1,6 @@
 """Client nodes keep time on the simulator's /clock (100 Hz of sim time): a course-style `rospy.Rate` loop and a
-`rospy.sleep` loop at 10 Hz and at 100 Hz, with the simulator at real time (every wake-up exactly on its period)
-and unpaced (wake-ups never early, on whole clock ticks, and the loop runs to its end)."""
+`rospy.sleep` loop at 10 Hz and at 100 Hz, with the simulator at real time (wake-ups on their deadlines, a few at
+most one clock tick late) and unpaced (wake-ups never early, on whole clock ticks, and the loop runs to its end)."""
 import json
 import subprocess
 import sys
@@ -43,8 +43,16 @@ def test_client_loops_wake_on_time(ros_master, factor, hz, mode):
     assert wakes[-1] >= start + DURATION_S, "the loop ran to its end"
     assert all(round(t / CLOCK_TICK_S, 6).is_integer() for t in wakes), "wake-ups fall on /clock ticks"
     if factor == 1:
-        assert len(wakes) == round(DURATION_S * hz)
-        assert intervals == pytest.approx([period] * len(wakes), abs=1e-6)
+        # On time: never before its deadline, and at most one /clock tick after it (a client that gets the CPU
+        # late on a loaded machine sees the next tick first). A Rate keeps its schedule, so it also makes every
+        # one of its iterations; a sleep loop restarts its wait from each late wake-up.
+        if mode == "rate":
+            assert len(wakes) == round(DURATION_S * hz)
+            lateness = [wake - (start + period * i) for i, wake in enumerate(wakes, start=1)]
+        else:
+            lateness = [interval - period for interval in intervals]
+        assert all(-1e-6 <= late <= CLOCK_TICK_S + 1e-6 for late in lateness), lateness
+        assert sum(late > 1e-6 for late in lateness) <= len(lateness) // 10, "late wake-ups are the exception"
     else:
         # Unpaced, sim time outruns the client: it wakes late and fewer times (a Rate catches up with shorter
         # waits, as rospy's does), but never more often than its rate allows and a sleep never ends early.

@@ -51,6 +51,6 @@ def test_a_child_that_ignores_ctrl_c_is_killed(tmp_path):
     process = start_wrapper(tmp_path, IGNORES_CTRL_C)
     children = descendants(process.pid)
     assert children
-    process.stop()
+    process.stop(grace_s=2.0)   # the grace a well-behaved process gets is not what this test is about
     assert not any(alive(*child) for child in children)
     assert not (tmp_path / "closed").exists()
