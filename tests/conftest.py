@@ -26,6 +26,20 @@ def pytest_configure(config):
     os.environ["LAB_STUDENT_WS"] = "off"
 
 
+def pytest_collection_modifyitems(config, items):
+    """Longest files first, so parallel workers (scripts/test: a whole file per pytest-xdist worker) do not end
+    with one long integration module running alone: files with `slow` tests, then the other integration files,
+    then the quick unit files to fill the gaps. The order of the tests inside a file is kept (a module's tests may
+    build on each other's state)."""
+    slow_files = {item.path for item in items if item.get_closest_marker("slow")}
+
+    def weight(item):
+        if item.path in slow_files:
+            return 0
+        return 1 if "integration" in item.path.parts else 2
+    items.sort(key=weight)
+
+
 @pytest.fixture(scope="module")
 def ros_master(tmp_path_factory, monkeypatch_module):
     """A private roscore on a free port for this test module; every process started through it is ended
