@@ -3,7 +3,14 @@ are always ended, waiting with timeouts, and a probe node that reads and writes 
 from roslab.master import RosMaster, free_port
 from roslab.probe import TopicProbe
 from roslab.processes import RosProcess
-from roslab.waiting import wait_for_param, wait_for_service, wait_for_topic, wait_until
+from roslab.waiting import (
+    service_uri,
+    wait_for_param,
+    wait_for_service,
+    wait_for_service_gone,
+    wait_for_topic,
+    wait_until,
+)
 
-__all__ = ["RosMaster", "RosProcess", "TopicProbe", "free_port", "wait_for_param", "wait_for_service",
-           "wait_for_topic", "wait_until"]
+__all__ = ["RosMaster", "RosProcess", "TopicProbe", "free_port", "service_uri", "wait_for_param", "wait_for_service",
+           "wait_for_service_gone", "wait_for_topic", "wait_until"]

@@ -24,14 +24,22 @@ def _master(master_uri):
     return rosgraph.Master("/roslab_test", master_uri=master_uri)
 
 
+def service_uri(master_uri, name):
+    """The rosrpc URI of service `name` as the master knows it, or None while it is not registered."""
+    try:
+        return _master(master_uri).lookupService(name)
+    except (rosgraph.MasterError, OSError):
+        return None
+
+
 def wait_for_service(master_uri, name, timeout_s=20.0):
     """Wait until `name` is registered with the master; returns its rosrpc URI."""
-    def lookup():
-        try:
-            return _master(master_uri).lookupService(name)
-        except (rosgraph.MasterError, OSError):
-            return None
-    return wait_until(lookup, timeout_s, "service " + name)
+    return wait_until(lambda: service_uri(master_uri, name), timeout_s, "service " + name)
+
+
+def wait_for_service_gone(master_uri, name, timeout_s=20.0):
+    """Wait until `name` is no longer registered (its server has left the master)."""
+    wait_until(lambda: service_uri(master_uri, name) is None, timeout_s, f"service {name} to leave the master")
 
 
 def wait_for_topic(master_uri, name, timeout_s=20.0):

@@ -6,27 +6,9 @@ from pathlib import Path
 
 import pytest
 
-from roslab.terminal import Terminal, student_env
-
 REPO_ROOT = Path(__file__).resolve().parents[3]
 TUOS_MSGS = REPO_ROOT / "catkin_ws/src/interfaces/tuos_msgs"
 WEEK4_SERVICES = REPO_ROOT / "catkin_ws/src/exercises/week4_services"
-
-
-@pytest.fixture(scope="module")
-def home(tmp_path_factory):
-    home = tmp_path_factory.mktemp("home")
-    (home / ".bashrc").write_text("source {}\n".format(REPO_ROOT / "scripts" / "env.sh"))
-    return home
-
-
-@pytest.fixture(scope="module")
-def terminal(ros_master, home, tmp_path_factory):
-    env = student_env(home, ROS_MASTER_URI=ros_master.uri, ROS_HOSTNAME="localhost", LAB_STUDENT_WS="off",
-                      ROS_LOG_DIR=str(ros_master.workdir / "log"))
-    terminal = Terminal(env, home, tmp_path_factory.mktemp("terminal") / "terminal.log")
-    yield terminal
-    terminal.close()
 
 
 def test_roscd_and_rosls(terminal):

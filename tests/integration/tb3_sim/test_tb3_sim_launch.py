@@ -10,37 +10,9 @@ import rosgraph
 import rospy
 from gazebo_msgs.srv import GetModelState, GetWorldProperties
 
-from roslab import RosProcess, wait_for_service, wait_for_topic, wait_until
+from roslab import wait_for_service, wait_for_service_gone, wait_until
 
 REPO_ROOT = Path(__file__).resolve().parents[3]
-
-
-@pytest.fixture
-def launch(ros_master, tmp_path):
-    """Start `roslaunch <args>` with optional environment changes; every launch is ended after the test."""
-    started = []
-
-    def start(*args, unset=(), **env):
-        environment = {k: v for k, v in ros_master.env.items() if k not in unset}
-        environment.update(env)
-        process = RosProcess(["roslaunch", "--wait", *args], environment, tmp_path / f"launch{len(started)}.log")
-        started.append(process)
-        wait_for_service(ros_master.uri, "/gazebo/get_world_properties")
-        wait_for_topic(ros_master.uri, "/odom")   # the robot is there (spawn_model may come after the simulator)
-        return process
-
-    yield start
-    for process in started:
-        process.stop()
-    wait_until(lambda: not _service_up(ros_master), 20, "the simulator to leave the master")
-
-
-def _service_up(ros_master):
-    try:
-        rosgraph.Master("/test", master_uri=ros_master.uri).lookupService("/gazebo/get_world_properties")
-        return True
-    except rosgraph.MasterError:
-        return False
 
 
 def robot_position(name):
@@ -182,5 +154,5 @@ def test_with_a_display_the_window_opens_and_physics_runs_beside_it(ros_master):
     finally:
         process.stop()
         xvfb.stop()
-    wait_until(lambda: not _service_up(ros_master), 20, "the simulator to leave the master")
+    wait_for_service_gone(ros_master.uri, "/gazebo/get_world_properties")
     assert "Traceback" not in process.output()

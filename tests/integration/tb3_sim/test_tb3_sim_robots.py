@@ -2,7 +2,7 @@
 robot_description` gives the topics turtlebot3_empty_world.launch gives; multi_turtlebot3.launch's three robots
 drive independently in their namespaces and collide with each other; wheel joint angles turn by distance / wheel
 radius; /gazebo/set_physics_properties changes the measured real-time factor. One launch at a time on the
-module's master (each test ends its own)."""
+module's master (each test ends its own; the `launch` fixture is in this folder's conftest)."""
 import subprocess
 import time
 from pathlib import Path
@@ -24,37 +24,10 @@ from gazebo_msgs.srv import (
 )
 from geometry_msgs.msg import Vector3
 
-from roslab import RosProcess, wait_for_service, wait_until
+from roslab import wait_for_service_gone, wait_until
 
 WAFFLE_XACRO = "$(find turtlebot3_description)/urdf/turtlebot3_waffle.urdf.xacro"
 ROBOT_TOPICS = ("cmd_vel", "odom", "scan", "imu", "joint_states", "camera/rgb/image_raw", "camera/depth/image_raw")
-
-
-@pytest.fixture
-def launch(ros_master, tmp_path):
-    """Start `roslaunch <args>` (TURTLEBOT3_MODEL=waffle); every launch is ended after the test, and the test waits
-    until the simulator has left the master."""
-    started = []
-
-    def start(*args):
-        environment = {**ros_master.env, "TURTLEBOT3_MODEL": "waffle"}
-        process = RosProcess(["roslaunch", "--wait", *args], environment, tmp_path / f"launch{len(started)}.log")
-        started.append(process)
-        wait_for_service(ros_master.uri, "/gazebo/get_world_properties")
-        return process
-
-    yield start
-    for process in started:
-        process.stop()
-    wait_until(lambda: not _simulator_up(ros_master), 20, "the simulator to leave the master")
-
-
-def _simulator_up(ros_master):
-    try:
-        rosgraph.Master("/test", master_uri=ros_master.uri).lookupService("/gazebo/get_world_properties")
-        return True
-    except rosgraph.MasterError:
-        return False
 
 
 def _published_topics(ros_master):
@@ -89,12 +62,12 @@ def robot_topics(ros_master, namespace="/"):
 
 
 def test_empty_world_plus_spawn_model_gives_the_topics_of_turtlebot3_empty_world(launch, ros_master, tmp_path):
-    first = launch("turtlebot3_gazebo", "turtlebot3_empty_world.launch", "gui:=false")
+    first = launch("turtlebot3_gazebo", "turtlebot3_empty_world.launch", "gui:=false", TURTLEBOT3_MODEL="waffle")
     wait_for_models("turtlebot3_waffle")
     expected = robot_topics(ros_master)
     assert all(expected.values()), expected
     first.stop()
-    wait_until(lambda: not _simulator_up(ros_master), 20, "the first simulator to leave the master")
+    wait_for_service_gone(ros_master.uri, "/gazebo/get_world_properties")
 
     (tmp_path / "spawn.launch").write_text(f"""<launch>
   <include file="$(find gazebo_ros)/launch/empty_world.launch"><arg name="gui" value="false"/></include>
@@ -102,7 +75,7 @@ def test_empty_world_plus_spawn_model_gives_the_topics_of_turtlebot3_empty_world
   <node pkg="gazebo_ros" type="spawn_model" name="spawn_urdf"
         args="-urdf -model turtlebot3_waffle -x 0.5 -y 0.2 -param robot_description"/>
 </launch>""")
-    launch(str(tmp_path / "spawn.launch"))
+    launch(str(tmp_path / "spawn.launch"), TURTLEBOT3_MODEL="waffle")
     assert model_names() in (["ground_plane"], ["ground_plane", "turtlebot3_waffle"])
     wait_for_models("turtlebot3_waffle")
     assert position("turtlebot3_waffle") == pytest.approx((0.5, 0.2))
@@ -110,7 +83,8 @@ def test_empty_world_plus_spawn_model_gives_the_topics_of_turtlebot3_empty_world
 
 
 def test_multi_turtlebot3_robots_drive_independently_and_collide(launch, probe):
-    launch("turtlebot3_gazebo", "multi_turtlebot3.launch", "gui:=false", "real_time_factor:=4")
+    launch("turtlebot3_gazebo", "multi_turtlebot3.launch", "gui:=false", "real_time_factor:=4",
+           robot_topic="/tb3_2/odom", TURTLEBOT3_MODEL="waffle")
     wait_for_models("tb3_0", "tb3_1", "tb3_2")
     names = model_names()
     assert names[:2] == ["ground_plane", "turtlebot3_house"] and sorted(names[2:]) == ["tb3_0", "tb3_1", "tb3_2"]
@@ -148,7 +122,7 @@ def test_multi_turtlebot3_robots_drive_independently_and_collide(launch, probe):
 
 
 def test_wheel_joints_turn_by_distance_over_wheel_radius(launch, probe):
-    launch("tb3_sim", "tb3_sim.launch", "gui:=false", "real_time_factor:=4")
+    launch("tb3_sim", "tb3_sim.launch", "gui:=false", "real_time_factor:=4", TURTLEBOT3_MODEL="waffle")
     probe.subscribe("/joint_states", "sensor_msgs/JointState")
     probe.subscribe("/odom", "nav_msgs/Odometry")
     first = probe.wait_for_message("/joint_states")
@@ -174,7 +148,7 @@ def measured_real_time_factor(wall_s=2.0):
 
 
 def test_set_physics_properties_changes_the_real_time_factor(launch):
-    launch("tb3_sim", "tb3_sim.launch", "gui:=false")
+    launch("tb3_sim", "tb3_sim.launch", "gui:=false", TURTLEBOT3_MODEL="waffle")
     get = rospy.ServiceProxy("/gazebo/get_physics_properties", GetPhysicsProperties)
     set_ = rospy.ServiceProxy("/gazebo/set_physics_properties", SetPhysicsProperties)
     initial = get()
@@ -194,7 +168,7 @@ def test_set_physics_properties_changes_the_real_time_factor(launch):
 
 
 def test_a_second_robot_needs_its_own_namespace(launch, ros_master):
-    launch("tb3_sim", "tb3_sim.launch", "gui:=false")
+    launch("tb3_sim", "tb3_sim.launch", "gui:=false", TURTLEBOT3_MODEL="waffle")
     urdf = Path(rospkg.RosPack().get_path("turtlebot3_description")) / "urdf" / "turtlebot3_burger.urdf.xacro"
     xml = subprocess.run(["rosrun", "xacro", "xacro", str(urdf)], env=ros_master.env, capture_output=True, text=True,
                          timeout=60)

@@ -10,12 +10,11 @@ import math
 import statistics
 
 import pytest
-import rosgraph
 import rospy
 from gazebo_msgs.srv import GetModelState, GetWorldProperties
 from std_srvs.srv import Empty
 
-from roslab import RosProcess, wait_for_service, wait_until
+from roslab import RosProcess, wait_for_service, wait_for_service_gone, wait_until
 
 SCAN_X_M = -0.064
 ANGLE_INCREMENT_RAD = 6.28319 / 359
@@ -82,14 +81,6 @@ WORLDS = {
 }
 
 
-def _service_up(ros_master):
-    try:
-        rosgraph.Master("/test", master_uri=ros_master.uri).lookupService("/gazebo/get_world_properties")
-        return True
-    except rosgraph.MasterError:
-        return False
-
-
 @pytest.fixture(scope="module", params=sorted(WORLDS))
 def world(request, ros_master, tmp_path_factory):
     """One world's launch file running with TURTLEBOT3_MODEL=waffle, its robot spawned; ended after its tests."""
@@ -104,7 +95,7 @@ def world(request, ros_master, tmp_path_factory):
         yield name
     finally:
         process.stop()
-        wait_until(lambda: not _service_up(ros_master), 20, "the simulator to leave the master")
+        wait_for_service_gone(ros_master.uri, "/gazebo/get_world_properties")
 
 
 def model_names():

@@ -14,9 +14,8 @@ import rosgraph
 
 from roslab import wait_until
 from roslab.processes import descendants
-from roslab.terminal import PROMPT, Terminal, student_env
+from roslab.terminal import PROMPT
 
-REPO_ROOT = Path(__file__).resolve().parents[3]
 CMD_VEL = "/cmd_vel"
 BANNER_END = "CTRL-C to quit"
 NOT_A_TERMINAL = "turtlebot3_teleop_key: standard input is not a terminal, so there are no keys to read"
@@ -40,22 +39,6 @@ KEY_SEQUENCE = [
     ("x", status_line(0.019999999999999997, 0.0), [(0.025, 0.0), (0.02, 0.0)]),
     ("s", status_line(0.0, 0.0), [(0.0, 0.0)]),
 ]
-
-
-@pytest.fixture(scope="module")
-def home(tmp_path_factory):
-    home = tmp_path_factory.mktemp("home")
-    (home / ".bashrc").write_text("source {}\n".format(REPO_ROOT / "scripts" / "env.sh"))
-    return home
-
-
-@pytest.fixture(scope="module")
-def terminal(ros_master, home, tmp_path_factory):
-    env = student_env(home, ROS_MASTER_URI=ros_master.uri, ROS_HOSTNAME="localhost", LAB_STUDENT_WS="off",
-                      ROS_LOG_DIR=str(ros_master.workdir / "log"))
-    terminal = Terminal(env, home, tmp_path_factory.mktemp("terminal") / "terminal.log")
-    yield terminal
-    terminal.close()
 
 
 class CmdVel:
