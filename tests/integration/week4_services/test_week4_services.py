@@ -119,6 +119,7 @@ def test_a_second_timed_move_while_one_runs_is_refused_at_once(robot):
     assert any("busy" in line for line in lines), lines
 
 
+@pytest.mark.realtime   # the stopping distance depends on the server's control loop running on time
 @pytest.mark.parametrize("velocity, tolerance", [(0.1, 0.02), (0.26, 0.04)])
 def test_approach_stops_at_the_requested_distance(robot, velocity, tolerance):
     reply = call("/approach_service", Approach, 0.4, velocity)

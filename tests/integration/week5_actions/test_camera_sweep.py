@@ -97,6 +97,7 @@ def test_a_cancelled_sweep_is_preempted_keeps_its_images_and_stops_the_robot(swe
     assert sweeper.turned_deg(before, after) < 18.0 * (captured + 1), "the robot stopped at the cancel"
 
 
+@pytest.mark.realtime   # the client's feedback subscriber must be connected when the first feedback goes out
 def test_the_course_client_prints_feedback_and_the_result(ros_master, sweeper):
     run = subprocess.run(["rosrun", "week5_actions", "action_client.py"], env=ros_master.env,
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
