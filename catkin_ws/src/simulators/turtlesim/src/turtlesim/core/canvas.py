@@ -4,7 +4,7 @@ Coordinates are screen metres (x right, y down, as the original's QPointF positi
 is metres x PIXELS_PER_METRE. Use `world_to_screen` for world coordinates. Needs no window:
 QImage and QPainter work headless (QT_QPA_PLATFORM=offscreen).
 """
-from PyQt5.QtCore import QPointF
+from PyQt5.QtCore import QBuffer, QIODevice, QPointF
 from PyQt5.QtGui import QColor, QImage, QPainter, QPen, qBlue, qGreen, qRed, qRgb
 
 from turtlesim.core.constants import CANVAS_SIZE_PX, DEFAULT_BACKGROUND, PIXELS_PER_METRE, WORLD_SIZE
@@ -35,6 +35,8 @@ class Canvas:
     def __init__(self, background=DEFAULT_BACKGROUND):
         """Create the image filled with `background` (r, g, b)."""
         self._image = QImage(CANVAS_SIZE_PX, CANVAS_SIZE_PX, QImage.Format_ARGB32)
+        self.version = 0
+        """Goes up with every change of the pixels, so a viewer re-sends the canvas only when it changed."""
         self.clear(background)
 
     @property
@@ -45,6 +47,7 @@ class Canvas:
     def clear(self, background):
         """Fill the whole canvas with `background` (r, g, b), erasing every trail."""
         self._image.fill(qRgb(*background))
+        self.version += 1
 
     def draw_line(self, start, end, pen):
         """Draw a segment between two screen-metre points with a Pen, no antialiasing.
@@ -57,6 +60,7 @@ class Canvas:
             painter.drawLine(to_pixels(start), to_pixels(end))
         finally:
             painter.end()
+        self.version += 1
 
     def color_at(self, point):
         """(r, g, b) of the pixel under a screen-metre point.
@@ -70,6 +74,13 @@ class Canvas:
         row = min(max(pixel_point.y(), 0), last)
         pixel = self._image.pixel(column, row)
         return qRed(pixel), qGreen(pixel), qBlue(pixel)
+
+    def png_bytes(self):
+        """The canvas alone, PNG-encoded in memory."""
+        buffer = QBuffer()
+        buffer.open(QIODevice.WriteOnly)
+        self._image.save(buffer, 'PNG')
+        return bytes(buffer.data())
 
     def save_png(self, path):
         """Write the canvas alone as a PNG file; return True on success (QImage.save)."""

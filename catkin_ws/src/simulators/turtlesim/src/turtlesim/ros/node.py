@@ -13,6 +13,10 @@ original's graph:
   saves the current view (trails and turtles) as PNG to ~snapshot_path (string, read at each
   call; default $ROS_HOME/turtlesim.png, ~ expanded). A path that cannot be written fails the
   call with a text naming it.
+* ~publish_canvas (bool, default false): true publishes the pen canvas (trails only, no turtles)
+  as sensor_msgs/CompressedImage PNG on ~canvas/compressed (image_transport's compressed name, so
+  image_view shows it), latched, at most CANVAS_RATE_HZ while someone subscribes and only when it
+  changed. lab_web's page draws the trails from it.
 * ~headless (bool, default false): true never opens a window. Without it a 500x500 window
   titled TurtleSim opens when $DISPLAY names a reachable X server; ROS behaviour is identical.
 Console lines are in roscpp's format (`[ INFO] [secs.nanosecs]: ...`, see ros/console.py).
@@ -37,6 +41,7 @@ from turtlesim.core.constants import BACKGROUND_PARAMS, DEFAULT_BACKGROUND, TICK
 from turtlesim.core.errors import InvalidNameError, TurtleSimError, UnknownTurtleError
 from turtlesim.core.simulation import TurtleSim
 from turtlesim.core.ticker import run_ticks
+from turtlesim.ros.canvas import CanvasPublisher
 from turtlesim.ros.console import use_roscpp_console
 from turtlesim.ros.log import ros_log
 from turtlesim.ros.service import RoscppStyleService, ServiceFailure
@@ -92,13 +97,14 @@ class TurtleSimNode:
     the timer loop.
     """
 
-    def __init__(self, stop, snapshot_service=False, rng=None):
+    def __init__(self, stop, snapshot_service=False, rng=None, publish_canvas=False):
         """Write default params, start the core (logs the start line and spawns turtle1),
         advertise turtle1's interfaces, then the global services (and ~snapshot if asked).
 
         Args:
             stop: threading.Event; once set, `tick` returns False and `wait` returns True.
             snapshot_service: advertise ~snapshot too.
+            publish_canvas: publish ~canvas/compressed too.
             rng: random.Random for the turtles' looks.
         """
         self._lock = threading.Lock()
@@ -118,6 +124,7 @@ class TurtleSimNode:
         ]
         if snapshot_service:
             self._services.append(RoscppStyleService('~snapshot', Empty, self._on_snapshot))
+        self._canvas = CanvasPublisher() if publish_canvas else None
 
     def tick(self):
         """One update: step the core at the current wall time, publish pose then color_sensor
@@ -133,6 +140,8 @@ class TurtleSimNode:
                 if rospy.is_shutdown():
                     return False   # Ctrl-C closed the publishers after the shutdown check above
                 raise
+            if self._canvas is not None:
+                self._canvas.publish_if_changed(self._sim.canvas, time.monotonic())
             poses = [(name, result.pose) for name, result in results]
             if poses != self._last_poses:
                 self._last_poses = poses
@@ -287,12 +296,13 @@ def main():
     try:
         headless = read_flag('headless')
         snapshot_service = read_flag('snapshot_service')
+        publish_canvas = read_flag('publish_canvas')
     except ValueError as error:
         rospy.logfatal(str(error))
         rospy.signal_shutdown(str(error))
         return 2
     with_window = window_wanted(headless)
-    node = TurtleSimNode(stop, snapshot_service)
+    node = TurtleSimNode(stop, snapshot_service, publish_canvas=publish_canvas)
     keep_registered()
     try:
         if with_window:

@@ -1,0 +1,47 @@
+"""The lab_web node: reads its ~params, starts the ROS bridge and serves the page until Ctrl-C.
+
+~host (str, 127.0.0.1): the address to listen on; anything but loopback needs a token (see lab_web.access).
+~port (int, 8080): the port; taken ports are reported with the launch argument that changes it.
+~token (str, ""): the page's token when ~host is not loopback (empty: a random one, printed with the URL).
+~robot_namespace (str, ""): the robot whose odom, scan, camera and cmd_vel the page shows and drives.
+"""
+import sys
+from pathlib import Path
+
+import rospkg
+import rospy
+from aiohttp import web
+
+from lab_web.access import AccessError, AccessPolicy
+from lab_web.ros_bridge import RosBridge
+from lab_web.server import make_app
+
+
+def static_dir():
+    return Path(rospkg.RosPack().get_path("lab_web")) / "static"
+
+
+def main():
+    rospy.init_node("lab_web", disable_signals=True)   # aiohttp handles Ctrl-C and stops the bridge itself
+    port = rospy.get_param("~port", 8080)
+    try:
+        if isinstance(port, bool) or not isinstance(port, int) or not 1 <= port <= 65535:
+            raise AccessError("port must be a number from 1 to 65535, got {!r}".format(port))
+        policy = AccessPolicy(str(rospy.get_param("~host", "127.0.0.1")), str(rospy.get_param("~token", "")))
+    except AccessError as error:
+        rospy.logfatal("lab_web: %s", error)
+        sys.exit(2)
+    bridge = RosBridge(str(rospy.get_param("~robot_namespace", "")))
+    if policy.warning():
+        rospy.logwarn(policy.warning())
+    rospy.loginfo("lab_web: open %s in a browser", policy.url(port))
+    try:
+        web.run_app(make_app(bridge, policy, static_dir()), host=policy.host, port=port, print=None,
+                    access_log=None, handle_signals=True)
+    except OSError as error:
+        rospy.logfatal("lab_web: cannot listen on %s:%s (%s): another program uses the port? Choose another with "
+                       "port:=<number>", policy.host, port, error.strerror or error)
+        sys.exit(1)
+    finally:
+        bridge.shutdown()
+        rospy.signal_shutdown("lab_web stopped")

@@ -1,0 +1,159 @@
+"""The web view of tb3_sim in a real headless Chromium, against the Week 4 demo (the approach arena and its three
+servers): the page draws the world where it is, follows the robot as /odom says, drives it with the arrow keys
+through /cmd_vel, places and drags boxes through the /gazebo services, echoes topics and calls /move_service."""
+import math
+import re
+
+import pytest
+import rospy
+from gazebo_msgs.srv import GetModelState, GetWorldProperties
+from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import Select
+from std_srvs.srv import Empty
+
+from roslab import wait_for_service, wait_until
+from roslab.robot_view import RobotView, pose_of
+
+from .conftest import open_page, start_web_server
+
+ROBOT_RGB = (0x1F, 0x4E, 0xA3)
+WALL_RGB = (0x55, 0x55, 0x55)
+MODEL_RGB = (0xB0, 0x78, 0x40)
+FLOOR_RGB = (0xF4, 0xF4, 0xF0)
+
+
+@pytest.fixture(scope="module")
+def robot(ros_master):
+    ros_master.roslaunch("week4_services", "week4_demo.launch", "gui:=false", "camera_width:=320",
+                         "camera_height:=240")
+    for name in ["/move_service", "/gazebo/reset_world", "/gazebo/spawn_sdf_model", "/gazebo/set_model_state"]:
+        wait_for_service(ros_master.uri, name, timeout_s=60)
+    view = RobotView(ros_master.probe())
+    view.probe.subscribe("/cmd_vel", "geometry_msgs/Twist")
+    return view
+
+
+@pytest.fixture(scope="module")
+def page(ros_master, robot, browser):
+    base, _ = start_web_server(ros_master)
+    open_page(browser, base, "labView.connected && labView.robot && labView.models.length === 3")
+    return browser
+
+
+@pytest.fixture(autouse=True)
+def still_at_the_origin(robot, page):
+    """Each test starts with the robot still at the origin and its trail cleared."""
+    robot.probe.publish("/cmd_vel", "geometry_msgs/Twist", {})
+    rospy.ServiceProxy("/gazebo/reset_world", Empty)()
+    wait_until(lambda: math.hypot(*pose_of(robot.probe.wait_for_message("/odom"))[:2]) < 0.01, 10, "the reset")
+
+
+def pixel(page, x, y):
+    """(r, g, b) the page drew at world point (x, y)."""
+    px, py = page.script("return labView.worldToPixel(arguments[0], arguments[1]);", x, y)
+    return tuple(int(channel) for channel in page.canvas_pixels("world")[round(py), round(px)])
+
+
+def robot_pixel(page, x, y):
+    """The colour drawn on the body of a robot at (x, y) heading along +x, beside its white heading line."""
+    return pixel(page, x - 0.05, y + 0.05)
+
+
+def close_to(rgb, expected, tolerance=12):
+    return all(abs(a - b) <= tolerance for a, b in zip(rgb, expected))
+
+
+def page_robot_at(page, x, y, tolerance_m=0.01):
+    shown = page.script("return labView.robot;")
+    return shown is not None and math.hypot(shown["x"] - x, shown["y"] - y) <= tolerance_m
+
+
+def test_the_page_draws_the_world_where_it_is_without_console_errors(page):
+    assert close_to(robot_pixel(page, 0.0, 0.0), ROBOT_RGB)
+    assert close_to(pixel(page, 1.0, -1.525), WALL_RGB)          # the south wall, 5 cm thick
+    assert close_to(pixel(page, 1.5, 0.1), MODEL_RGB)            # target_box, 0.4 m wide at (1.5, 0)
+    assert close_to(pixel(page, 0.5, 1.0), FLOOR_RGB, tolerance=20)
+    assert page.driver.find_element(By.ID, "status").text == "connected"
+    assert page.console_errors() == []
+
+
+def test_cmd_vel_from_another_node_moves_the_robot_on_the_page(robot, page):
+    robot.probe.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.25}})
+    wait_until(lambda: pose_of(robot.probe.wait_for_message("/odom"))[0] > 0.6, 20, "the robot to drive 0.6 m")
+    robot.probe.publish("/cmd_vel", "geometry_msgs/Twist", {})
+    x, y, _ = robot.settled_pose()
+    wait_until(lambda: page_robot_at(page, x, y), 5, "the page to show the robot at /odom's pose")
+    assert close_to(robot_pixel(page, x, y), ROBOT_RGB)
+    assert not close_to(robot_pixel(page, 0.0, 0.0), ROBOT_RGB)   # no longer drawn at the start (0.15 m radius)
+    trail = page.script("return app.trail;")
+    assert trail[0] == [0.0, 0.0] and trail[-1][0] > 0.55
+
+
+def test_the_up_arrow_drives_the_robot_and_releasing_it_stops_it(robot, page):
+    body = page.driver.find_element(By.TAG_NAME, "body")
+    robot.probe.take("/cmd_vel")
+    ActionChains(page.driver).key_down(Keys.ARROW_UP, body).perform()
+    try:
+        robot.probe.wait_for_message("/odom", 10, lambda odom: odom["twist"]["twist"]["linear"]["x"] > 0.15)
+    finally:
+        ActionChains(page.driver).key_up(Keys.ARROW_UP, body).perform()
+    x, y, _ = robot.settled_pose()
+    assert x > 0.02 and abs(y) < 0.01
+    commands = [message["msg"]["linear"]["x"] for message in robot.probe.take("/cmd_vel")]
+    assert commands[-1] == 0.0 and max(commands) == pytest.approx(0.8 * 0.26)   # 80 % of the Waffle's top speed
+
+
+def test_a_click_on_the_floor_spawns_a_box_and_dragging_moves_it(page):
+    canvas = page.driver.find_element(By.ID, "world")
+    origin = page.script("const r = arguments[0].getBoundingClientRect(); return [r.width / 2, r.height / 2];", canvas)
+
+    def offset(x, y):
+        px, py = page.script("return labView.worldToPixel(arguments[0], arguments[1]);", x, y)
+        return round(px - origin[0]), round(py - origin[1])
+
+    ActionChains(page.driver).move_to_element_with_offset(canvas, *offset(-0.5, 0.8)).click().perform()
+    world = rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)
+    wait_until(lambda: "web_box_1" in world().model_names, 10, "get_world_properties to list web_box_1")
+    state = rospy.ServiceProxy("/gazebo/get_model_state", GetModelState)
+    metres_per_pixel = 1.0 / abs(offset(1.0, 0.0)[0] - offset(0.0, 0.0)[0])
+    placed = state("web_box_1", "").pose.position
+    assert math.hypot(placed.x + 0.5, placed.y - 0.8) <= 2 * metres_per_pixel
+    wait_until(lambda: page.script("return labView.models.some(m => m.name === 'web_box_1');"), 5,
+               "the page to show the box")
+    (ActionChains(page.driver).move_to_element_with_offset(canvas, *offset(-0.5, 0.8)).click_and_hold()
+     .move_by_offset(10, 10).move_to_element_with_offset(canvas, *offset(-0.5, -0.8)).release().perform())
+    wait_until(lambda: state("web_box_1", "").pose.position.y < -0.7, 10, "set_model_state to move the box")
+    moved = state("web_box_1", "").pose.position
+    assert math.hypot(moved.x + 0.5, moved.y + 0.8) <= 2 * metres_per_pixel
+
+
+def test_clicking_a_topic_echoes_its_latest_message(page):
+    row = page.driver.find_element(By.CSS_SELECTOR, "tr[data-topic='/odom']")
+    row.click()
+    wait_until(lambda: "child_frame_id: base_footprint" in page.driver.find_element(By.ID, "echo").text, 10,
+               "the echo of /odom")
+    row.click()
+    row = page.driver.find_element(By.CSS_SELECTOR, "tr[data-topic='/odom']")
+    rate = re.search(r"([\d.]+) Hz", row.text)
+    assert rate and float(rate.group(1)) == pytest.approx(30.0, rel=0.3), row.text   # odom: 30 Hz of sim time
+
+
+def test_the_week4_form_calls_move_service_and_shows_the_reply(page):
+    Select(page.driver.find_element(By.ID, "service-name")).select_by_value("/move_service")
+    wait_until(lambda: page.driver.find_elements(By.CSS_SELECTOR, "#service-fields input[name='request_signal']"),
+               10, "the request's fields")
+    page.driver.find_element(By.ID, "service-call").click()
+    wait_until(lambda: "response_message" in page.driver.find_element(By.ID, "service-reply").text, 10, "the reply")
+    assert page.driver.find_element(By.ID, "service-reply").text == (
+        "response_signal: False\nresponse_message: Nothing happened: set request_signal to 'true' to move the robot.")
+
+
+def test_the_camera_thumbnail_shows_while_asked_for(page):
+    page.driver.find_element(By.ID, "camera-toggle").click()
+    wait_until(lambda: (page.driver.find_element(By.ID, "camera-img").get_attribute("src") or "").startswith(
+        "data:image/jpeg"), 10, "a camera thumbnail")
+    page.driver.find_element(By.ID, "camera-toggle").click()
+    assert page.console_errors() == []
+

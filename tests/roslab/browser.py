@@ -1,0 +1,61 @@
+"""A real headless browser for page tests: Debian's Chromium driven by Selenium through chromedriver, with its
+console log, canvas pixels and a guaranteed end (every Chromium process it started is gone after `quit`)."""
+import base64
+import os
+
+import cv2
+import numpy
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+
+from roslab.processes import descendants, kill_if_alive
+
+CHROMEDRIVER = "/usr/bin/chromedriver"
+WINDOW_SIZE = (1400, 1000)
+NETWORK_NOISE = ("WebSocket connection to", "favicon.ico")
+"""Console entries Chromium itself writes about the network (a socket retried while a server restarts); page code
+cannot prevent them, so they are not counted as the page's errors."""
+
+
+class HeadlessBrowser:
+    def __init__(self):
+        options = webdriver.ChromeOptions()
+        for argument in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                         "--window-size={},{}".format(*WINDOW_SIZE), "--disable-extensions",
+                         "--no-first-run", "--disable-background-networking"):
+            options.add_argument(argument)
+        options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+        self._service = Service(CHROMEDRIVER)
+        self.driver = webdriver.Chrome(service=self._service, options=options)
+        self._processes = self._started()
+
+    def _started(self):
+        """chromedriver and every Chromium process under it, as {(pid, start time)}."""
+        driver_pid = self._service.process.pid
+        return ({process for process in descendants(os.getpid()) if process[0] == driver_pid}
+                | descendants(driver_pid))
+
+    def console_errors(self):
+        """SEVERE console entries since the last call, except Chromium's own network noise."""
+        return [entry for entry in self.driver.get_log("browser")
+                if entry["level"] == "SEVERE" and not any(noise in entry["message"] for noise in NETWORK_NOISE)]
+
+    def script(self, code, *args):
+        return self.driver.execute_script(code, *args)
+
+    def canvas_pixels(self, element_id):
+        """The canvas `element_id` as drawn, an RGB numpy array (rows, columns, 3) in its own pixels."""
+        data_url = self.script("return document.getElementById(arguments[0]).toDataURL('image/png');", element_id)
+        png = base64.b64decode(data_url.split(",", 1)[1])
+        return cv2.cvtColor(cv2.imdecode(numpy.frombuffer(png, numpy.uint8), cv2.IMREAD_COLOR), cv2.COLOR_BGR2RGB)
+
+    def save_screenshot(self, path):
+        self.driver.save_screenshot(str(path))
+
+    def quit(self):
+        self._processes |= self._started()
+        try:
+            self.driver.quit()
+        finally:
+            for pid, started in self._processes:
+                kill_if_alive(pid, started)

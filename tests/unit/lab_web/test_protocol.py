@@ -1,0 +1,85 @@
+"""What a page may send: every command type parsed, and every kind of bad frame refused with a reason that names
+the problem (never an exception other than ProtocolError)."""
+import json
+import math
+
+import pytest
+
+from lab_web.protocol import MAX_FRAME_BYTES, ProtocolError, frame, parse_command
+from lab_web.teleop import TELEOP_LIMITS
+
+
+def parse(content):
+    return parse_command(json.dumps(content), TELEOP_LIMITS)
+
+
+def refusal(text):
+    with pytest.raises(ProtocolError) as error:
+        parse_command(text, TELEOP_LIMITS)
+    return error.value
+
+
+def test_teleop_within_the_limits_is_accepted():
+    command = parse({"type": "teleop", "target": "robot", "linear": 0.2, "angular": -1.5})
+    assert command == ("teleop", None, {"target": "robot", "linear": 0.2, "angular": -1.5})
+
+
+@pytest.mark.parametrize("content, named", [
+    ({"type": "teleop", "target": "robot", "linear": 0.27, "angular": 0}, "linear"),
+    ({"type": "teleop", "target": "robot", "linear": 0, "angular": 1.9}, "angular"),
+    ({"type": "teleop", "target": "turtle1", "linear": 1e308, "angular": 0}, "linear"),
+    ({"type": "teleop", "target": "robot", "linear": "fast", "angular": 0}, "linear"),
+    ({"type": "teleop", "target": "robot", "linear": True, "angular": 0}, "linear"),
+    ({"type": "teleop", "target": "robot", "angular": 0}, "linear"),
+    ({"type": "teleop", "target": "tank", "linear": 0, "angular": 0}, "target"),
+])
+def test_bad_teleop_is_refused_naming_the_field(content, named):
+    assert str(refusal(json.dumps(content))).startswith(named)
+
+
+def test_non_finite_numbers_are_refused():
+    # Python's json accepts NaN and Infinity tokens, which no browser sends
+    assert "finite" in str(refusal('{"type": "teleop", "target": "robot", "linear": NaN, "angular": 0}'))
+    assert "finite" in str(refusal('{"type": "spawn_box", "id": 1, "x": Infinity, "y": 0}'))
+
+
+@pytest.mark.parametrize("text, reason", [
+    ("", "not JSON"), ("{", "not JSON"), ("[1, 2]", "JSON object"), ('"teleop"', "JSON object"),
+    ('{"type": "launch_missiles"}', "unknown type"), ("{}", "unknown type"),
+    ('{"type": "spawn_box", "x": 1, "y": 1}', "id must be"), ('{"type": "reset_world", "id": -1}', "id must be"),
+    ('{"type": "reset_world", "id": true}', "id must be"), ('{"type": "camera", "on": 1}', "on must be"),
+    ('{"type": "delete_model", "id": 3, "name": "a b"}', "name must be"),
+    ('{"type": "echo", "topic": "/odom; rm -rf /"}', "topic must be"),
+])
+def test_malformed_frames_are_refused_with_a_reason(text, reason):
+    assert reason in str(refusal(text))
+
+
+def test_a_refused_request_keeps_its_id_for_the_reply():
+    assert refusal('{"type": "move_model", "id": 7, "name": "box", "x": "left", "y": 0}').request_id == 7
+
+
+def test_oversized_frames_are_refused_before_parsing():
+    assert "too large" in str(refusal(" " * (MAX_FRAME_BYTES + 1)))
+
+
+def test_requests_carry_their_arguments():
+    assert parse({"type": "spawn_box", "id": 4, "x": 1, "y": -2.5}) == ("spawn_box", 4, {"x": 1.0, "y": -2.5})
+    assert parse({"type": "call_service", "id": 5, "service": "/move_service", "fields": {"request_signal": True}}) \
+        == ("call_service", 5, {"service": "/move_service", "fields": {"request_signal": True}})
+    assert parse({"type": "echo", "topic": None}).args == {"topic": None}
+
+
+def test_call_service_fields_must_be_plain_values():
+    assert "fields" in str(refusal(json.dumps({"type": "call_service", "id": 1, "service": "/s", "fields": [1]})))
+    assert "field a" in str(refusal(json.dumps({"type": "call_service", "id": 1, "service": "/s",
+                                                "fields": {"a": {"nested": 1}}})))
+
+
+def test_server_frames_are_json_without_non_finite_numbers():
+    text = frame("state", rtf=math.inf, scan=[[1.0, math.nan]])
+    assert json.loads(text) == {"type": "state", "rtf": None, "scan": [[1.0, None]]}
+
+
+def test_deeply_nested_json_is_refused_not_a_crash():
+    assert "nested too deeply" in str(refusal("[" * 4000))
