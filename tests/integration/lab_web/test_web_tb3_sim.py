@@ -53,7 +53,7 @@ def still_at_the_origin(robot, page):
 def pixel(page, x, y):
     """(r, g, b) the page drew at world point (x, y)."""
     px, py = page.script("return labView.worldToPixel(arguments[0], arguments[1]);", x, y)
-    return tuple(int(channel) for channel in page.canvas_pixels("world")[round(py), round(px)])
+    return tuple(int(channel) for channel in page.canvas_pixels("world")[int(py), int(px)])
 
 
 def robot_pixel(page, x, y):

@@ -1,0 +1,127 @@
+"""lab_web benchmarks for scripts/bench (wall-clock figures; not a test, never asserted).
+
+    source scripts/env.sh && python3 tests/bench/web_bench.py [seconds]
+
+Starts a private roscore, tb3_sim at real time through the Week 4 demo (week4_demo.launch, headless, 320x240
+camera), lab_web's server (rosrun lab_web web_server on a free port) and ONE headless Chromium page
+(roslab.browser.HeadlessBrowser) connected to it. The probe publishes one /cmd_vel turning the robot slowly
+(tb3_sim keeps the last command), so every state frame carries something new. Then, over ~20 s of wall time:
+- CPU of the lab_web server process (user + system, all threads) as % of one core (target <= 5 %);
+- state-to-page latency, the page's `labView.latenciesMs` (Date.now() when a frame is handled minus the frame's
+  stamp_ms, the wall time the newest /odom or /scan reached the server): median and 95th percentile (<= 100 ms);
+- state frames per second the page handled (`labView.frames` over the window; target >= 20, the server sends
+  at most 25).
+`run()` returns the rows [(name, value, unit, target, comparison)] for scripts/bench's table.
+"""
+import sys
+import tempfile
+import time
+import urllib.error
+import urllib.request
+from pathlib import Path
+
+import numpy
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from roslab import RosMaster, free_port, wait_for_service, wait_for_topic, wait_until  # noqa: E402
+from roslab.browser import HeadlessBrowser  # noqa: E402
+from roslab.graph import node_pid  # noqa: E402
+from roslab.processes import cpu_seconds  # noqa: E402
+
+MEASURE_S = 20.0
+SETTLE_S = 3.0
+"""Wall seconds after the page connected and the robot started turning, before measuring (start-up excluded)."""
+TURN_RAD_S = 0.3
+CPU_TARGET_PERCENT = 5.0
+LATENCY_TARGET_MS = 100.0
+FPS_TARGET = 20.0
+DEMO = ("week4_services", "week4_demo.launch", "gui:=false", "camera_width:=320", "camera_height:=240")
+
+
+def _http_status(url):
+    """The HTTP status of GET `url`, or None while nothing answers."""
+    try:
+        with urllib.request.urlopen(url, timeout=2) as response:
+            return response.status
+    except urllib.error.HTTPError as error:
+        return error.code
+    except OSError:
+        return None
+
+
+def start_web_server(master):
+    """rosrun lab_web web_server on a free port against `master`; returns the page's URL once it serves."""
+    port = free_port()
+    server = master.rosrun("lab_web", "web_server", "_port:={}".format(port))
+    base = "http://127.0.0.1:{}/".format(port)
+    wait_until(lambda: _http_status(base + "static/app.js") == 200 or not server.running(), 30, "lab_web to serve")
+    if not server.running():
+        raise RuntimeError("lab_web's web_server exited:\n" + server.output())
+    return base
+
+
+def open_page(browser, url, ready):
+    """Load `url` and wait until the page's `ready` JavaScript expression is true."""
+    browser.driver.get(url)
+    wait_until(lambda: browser.script("return typeof labView !== 'undefined' && !!({});".format(ready)), 30,
+               "the page: " + ready)
+
+
+def measure_with_page(duration_s=MEASURE_S):
+    """{"cpu": % of a core, "p50": ms, "p95": ms, "fps": frames/s, "samples": latencies} with the demo, the
+    server and one connected page, the robot turning at TURN_RAD_S."""
+    master = RosMaster(Path(tempfile.mkdtemp(prefix="web_bench_")))
+    browser = None
+    probe = None
+    try:
+        master.roslaunch(*DEMO)
+        wait_for_service(master.uri, "/gazebo/get_world_properties", 60)
+        wait_for_topic(master.uri, "/odom", 60)
+        url = start_web_server(master)
+        browser = HeadlessBrowser()
+        open_page(browser, url, "labView.connected && labView.robot")
+        probe = master.probe()
+        probe.publish("/cmd_vel", "geometry_msgs/Twist", {"angular": {"z": TURN_RAD_S}})
+        time.sleep(SETTLE_S)
+        pid = node_pid(master.uri, "/lab_web")
+        browser.script("labView.latenciesMs.length = 0;")
+        frames_start = browser.script("return labView.frames;")
+        cpu_start, wall_start = cpu_seconds(pid), time.monotonic()
+        time.sleep(duration_s)
+        cpu_used = cpu_seconds(pid) - cpu_start
+        frames_end = browser.script("return labView.frames;")
+        latencies = browser.script("return labView.latenciesMs.slice();")
+        wall = time.monotonic() - wall_start
+        if not latencies:
+            raise RuntimeError("the page recorded no latencies in {:.0f} s".format(wall))
+        return {"cpu": 100.0 * cpu_used / wall, "p50": float(numpy.percentile(latencies, 50)),
+                "p95": float(numpy.percentile(latencies, 95)), "fps": (frames_end - frames_start) / wall,
+                "samples": len(latencies)}
+    finally:
+        try:
+            if probe is not None:
+                probe.publish("/cmd_vel", "geometry_msgs/Twist", {})   # stop the robot
+        except Exception:   # noqa: BLE001  (the master's shutdown below ends everything anyway)
+            pass
+        try:
+            if browser is not None:
+                browser.quit()
+        finally:
+            master.shutdown()
+
+
+def run(duration_s=MEASURE_S):
+    """scripts/bench rows: lab_web with tb3_sim (Week 4 demo) at real time and one connected headless page."""
+    result = measure_with_page(duration_s)
+    return [
+        ("lab_web server CPU, tb3_sim at 1x, one page", result["cpu"], "% of a core", CPU_TARGET_PERCENT, "<="),
+        ("lab_web state-to-page latency p50", result["p50"], "ms", LATENCY_TARGET_MS, "<="),
+        ("lab_web state-to-page latency p95", result["p95"], "ms", LATENCY_TARGET_MS, "<="),
+        ("lab_web state frames delivered to the page", result["fps"], "frames/s", FPS_TARGET, ">="),
+    ]
+
+
+if __name__ == "__main__":
+    from report import print_table
+    print_table(run(float(sys.argv[1]) if len(sys.argv) > 1 else MEASURE_S))

@@ -1,0 +1,60 @@
+"""Who may open the page: anyone on this machine by default; beyond loopback (`_host:=0.0.0.0`) the server warns
+and needs the printed token, for the page and for the WebSocket; another site's page may never use the socket."""
+import asyncio
+import json
+import re
+
+import aiohttp
+import pytest
+
+from roslab import wait_until
+
+from .conftest import http_status, open_page, start_web_server
+
+
+async def socket_status(url, **headers):
+    """The HTTP status a WebSocket handshake to `url` gets (101 once upgraded), with the first frame's type."""
+    async with aiohttp.ClientSession() as session:
+        try:
+            async with session.ws_connect(url, headers=headers) as ws:
+                first = await ws.receive(timeout=10)
+                return 101, json.loads(first.data)["type"]
+        except aiohttp.WSServerHandshakeError as error:
+            return error.status, None
+
+
+def test_on_loopback_the_page_opens_without_a_token(ros_master, browser):
+    base, _ = start_web_server(ros_master)
+    assert http_status(base) == 200
+    assert asyncio.run(socket_status(base.replace("http", "ws") + "ws")) == (101, "hello")
+    open_page(browser, base)
+
+
+def test_beyond_loopback_the_token_is_required(ros_master, browser):
+    base, process = start_web_server(ros_master, "_host:=0.0.0.0")
+    wait_until(lambda: "token=" in process.output(), 10, "the URL with its token")
+    output = process.output()
+    token = re.search(r"\?token=([\w-]+)", output).group(1)
+    assert "anyone who can reach it and has the token can drive the robot" in output
+    assert http_status(base) == 403
+    assert http_status(base + "?token=wrong-token") == 403
+    ws = base.replace("http", "ws") + "ws"
+    assert asyncio.run(socket_status(ws)) == (403, None)
+    assert asyncio.run(socket_status(ws + "?token=" + token)) == (101, "hello")
+    browser.driver.get(base)
+    assert "needs the token" in browser.driver.page_source
+    open_page(browser, base + "?token=" + token)
+
+
+@pytest.mark.parametrize("origin", ["http://evil.example", "http://localhost:1"])
+def test_another_sites_page_cannot_open_the_socket(ros_master, origin):
+    base, _ = start_web_server(ros_master)
+    assert asyncio.run(socket_status(base.replace("http", "ws") + "ws", Origin=origin)) == (403, None)
+
+
+def test_a_taken_port_is_reported_with_the_argument_that_changes_it(ros_master):
+    base, _ = start_web_server(ros_master)
+    port = base.rsplit(":", 1)[1].strip("/")
+    second = ros_master.rosrun("lab_web", "web_server", "__name:=lab_web_2", "_port:=" + port)
+    assert second.popen.wait(timeout=30) == 1
+    assert "Choose another with port:=<number>" in second.output()
