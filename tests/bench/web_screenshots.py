@@ -18,12 +18,13 @@ import urllib.error
 import urllib.request
 from pathlib import Path
 
+from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.by import By
+
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from roslab import RosMaster, free_port, wait_for_service, wait_for_topic, wait_until  # noqa: E402
 from roslab.browser import HeadlessBrowser  # noqa: E402
-from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
-from selenium.webdriver.common.by import By  # noqa: E402
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
 WINDOW_SIZE = (1400, 1000)

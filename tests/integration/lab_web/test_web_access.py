@@ -7,7 +7,7 @@ import re
 import aiohttp
 import pytest
 
-from roslab import wait_until
+from roslab import free_port, wait_until
 
 from .conftest import http_status, open_page, start_web_server
 
@@ -58,3 +58,11 @@ def test_a_taken_port_is_reported_with_the_argument_that_changes_it(ros_master):
     second = ros_master.rosrun("lab_web", "web_server", "__name:=lab_web_2", "_port:=" + port)
     assert second.popen.wait(timeout=30) == 1
     assert "Choose another with port:=<number>" in second.output()
+
+
+def test_tb3_sim_launch_serves_the_page_with_web_true(ros_master, browser):
+    port = free_port()
+    ros_master.roslaunch("tb3_sim", "tb3_sim.launch", "gui:=false", "web:=true", "web_port:={}".format(port))
+    base = "http://127.0.0.1:{}/".format(port)
+    wait_until(lambda: http_status(base) == 200, 60, "tb3_sim.launch web:=true to serve the page")
+    open_page(browser, base, "labView.connected && labView.robot")

@@ -17,6 +17,7 @@ from lab_web.scene import (
     Trail,
     compose,
     scan_points,
+    sensor_offset,
     world_content,
 )
 
@@ -38,15 +39,20 @@ def test_world_markers_become_shapes_models_and_robots():
         marker("models", CYLINDER, Pose2D(3, 0, 0), scale=(0.2, 0.2), text="can"),
         marker("robots", CUBE, Pose2D(0, 0, 0), scale=(0.27, 0.3), text="turtlebot3_waffle"),
     ])
-    assert [shape["kind"] for shape in world["static"]] == ["polygon", "polygon", "segment", "circle"]
-    assert world["static"][0]["points"] == [[0, 0], [4, 0], [4, 1]]
-    assert world["static"][3] == {"kind": "circle", "x": 2, "y": 2, "r": 0.15}
+    assert [shape["kind"] for shape in world["static"]] == ["polygon", "segment", "circle"]
+    assert world["static"][0]["points"] == [[0, 0], [4, 0], [4, 1], [0, 1]]   # the fan of two triangles, whole
+    assert world["static"][2] == {"kind": "circle", "x": 2, "y": 2, "r": 0.15}
     assert world["models"] == [
         {"name": "box_1", "x": 1.5, "y": 0.5, "yaw": 1.5708, "kind": "box", "sx": 0.4, "sy": 0.2},
         {"name": "can", "x": 3, "y": 0, "yaw": 0.0, "kind": "circle", "r": 0.1}]
     assert world["robots"][0]["name"] == "turtlebot3_waffle"
     # the view fits the walls (plus a margin), not the models, so dragging a box does not move it
     assert world["bounds"] == [-1.5, -1.5, 4.5, 2.65]
+
+
+def test_triangles_that_do_not_fan_out_stay_triangles():
+    world = world_content([marker("static", TRIANGLE_LIST, points=[(0, 0), (1, 0), (0, 1), (5, 5), (6, 5), (5, 6)])])
+    assert [shape["points"] for shape in world["static"]] == [[[0, 0], [1, 0], [0, 1]], [[5, 5], [6, 5], [5, 6]]]
 
 
 def test_an_empty_world_is_shown_around_the_origin():
@@ -89,3 +95,13 @@ def test_the_trail_keeps_its_newest_points_and_a_page_too_far_behind_gets_them_a
         trail.add(i * 0.03, 0.0)
     reset, points, _ = trail.since(cursor)
     assert reset and len(points) == TRAIL_MAX_POINTS and points[-1] == [round((TRAIL_MAX_POINTS + 4) * 0.03, 3), 0.0]
+
+
+def test_the_lidars_offset_is_found_through_the_fixed_transforms():
+    transforms = {"base_link": ("base_footprint", Pose2D(0.0, 0.0, 0.0)),
+                  "base_scan": ("base_link", Pose2D(-0.064, 0.0, 0.0)),
+                  "camera_link": ("base_link", Pose2D(0.064, -0.065, 0.0))}
+    assert sensor_offset(transforms, "base_footprint", "base_scan") == Pose2D(-0.064, 0.0, 0.0)
+    assert sensor_offset(transforms, "base_footprint", "base_footprint") == Pose2D(0.0, 0.0, 0.0)
+    assert sensor_offset(transforms, "base_footprint", "imu_link") is None
+    assert sensor_offset({"a": ("b", ORIGIN), "b": ("a", ORIGIN)}, "base_footprint", "a") is None   # a loop

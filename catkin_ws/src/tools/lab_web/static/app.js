@@ -230,6 +230,7 @@ function onTurtlesim(frame) {
   const first = !app.turtlesim;
   app.turtlesim = frame;
   recordLatency(frame.stamp_ms);
+  if (!app.robotSeen) app.stateTimes.push(performance.now());   // #fps counts turtlesim frames without a robot
   dom.turtleHint.hidden = frame.canvas !== false;
   if (first) {
     updateTeleopInfo();
@@ -266,9 +267,10 @@ function onEcho(frame) {
 function onReply(frame) {
   const reply = {id: frame.id, ok: frame.ok === true, text: String(frame.text)};
   labView.replies.push(reply);
-  if (!reply.ok) addMessage(reply.text);
   const context = app.pending.get(reply.id);
   app.pending.delete(reply.id);
+  // A form asking for a service that is not running yet says so in its own reply box, not as an error.
+  if (!reply.ok && !(context && context.type === 'service_fields')) addMessage(reply.text);
   if (!context) return;
   if (context.type === 'service_fields') showServiceFields(context.service, reply);
   else if (context.type === 'call_service') showServiceReply(reply);

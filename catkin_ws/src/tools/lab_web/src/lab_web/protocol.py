@@ -157,7 +157,11 @@ def parse_command(text, teleop_limits):
 
 def frame(kind, **content):
     """One server -> page frame as JSON text (non-finite numbers become null, as JSON has none)."""
-    return json.dumps(_finite({"type": kind, **content}), separators=(",", ":"))
+    content = {"type": kind, **content}
+    try:
+        return json.dumps(content, separators=(",", ":"), allow_nan=False)
+    except ValueError:   # rare (an echoed value, a real-time factor before time moves): walk the frame once
+        return json.dumps(_finite(content), separators=(",", ":"))
 
 
 def _finite(value):

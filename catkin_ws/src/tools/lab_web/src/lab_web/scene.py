@@ -49,10 +49,20 @@ class MarkerData(NamedTuple):
     text: str
 
 
+def _polygons(points):
+    """A TRIANGLE_LIST's triangles as polygons: one polygon when they fan out from one vertex (how tb3_sim draws a
+    convex wall's top face), so the page fills it without seams along the inner edges."""
+    triangles = [points[i:i + 3] for i in range(0, len(points) - 2, 3)]
+    fan = all(triangle[0] == triangles[0][0] for triangle in triangles) and all(
+        before[2] == after[1] for before, after in zip(triangles, triangles[1:]))
+    if triangles and fan:
+        triangles = [[triangles[0][0], triangles[0][1]] + [triangle[2] for triangle in triangles]]
+    return [{"kind": "polygon", "points": [[_mm(x), _mm(y)] for x, y in triangle]} for triangle in triangles]
+
+
 def _shape_of_static(marker):
     if marker.type == TRIANGLE_LIST:
-        return [{"kind": "polygon", "points": [[_mm(x), _mm(y)] for x, y in marker.points[i:i + 3]]}
-                for i in range(0, len(marker.points) - 2, 3)]
+        return _polygons(marker.points)
     if marker.type == LINE_LIST:
         return [{"kind": "segment", "points": [[_mm(x), _mm(y)] for x, y in marker.points[i:i + 2]]}
                 for i in range(0, len(marker.points) - 1, 2)]
@@ -125,6 +135,23 @@ def compose(base: Pose2D, offset: Pose2D) -> Pose2D:
     cos_yaw, sin_yaw = math.cos(base.yaw), math.sin(base.yaw)
     return Pose2D(base.x + cos_yaw * offset.x - sin_yaw * offset.y,
                   base.y + sin_yaw * offset.x + cos_yaw * offset.y, base.yaw + offset.yaw)
+
+
+def sensor_offset(static_transforms, base_frame, sensor_frame):
+    """Pose2D of `sensor_frame` in `base_frame` from fixed transforms {child: (parent, Pose2D in the parent)}
+    (/tf_static), or None when no chain of them leads from the base to the sensor."""
+    chain = []
+    frame = sensor_frame
+    while frame != base_frame:
+        if frame not in static_transforms or len(chain) > len(static_transforms):
+            return None
+        parent, pose = static_transforms[frame]
+        chain.append(pose)
+        frame = parent
+    offset = Pose2D(0.0, 0.0, 0.0)
+    for pose in reversed(chain):
+        offset = compose(offset, pose)
+    return offset
 
 
 class Trail:
