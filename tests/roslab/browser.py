@@ -1,12 +1,12 @@
 """A real headless browser for page tests: Debian's Chromium driven by Selenium through chromedriver, with its
 console log, canvas pixels and a guaranteed end (every Chromium process it started is gone after `quit`)."""
-import base64
 import os
 
 import cv2
 import numpy
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.by import By
 
 from roslab.processes import descendants, kill_if_alive
 
@@ -44,9 +44,9 @@ class HeadlessBrowser:
         return self.driver.execute_script(code, *args)
 
     def canvas_pixels(self, element_id):
-        """The canvas `element_id` as drawn, an RGB numpy array (rows, columns, 3) in its own pixels."""
-        data_url = self.script("return document.getElementById(arguments[0]).toDataURL('image/png');", element_id)
-        png = base64.b64decode(data_url.split(",", 1)[1])
+        """A screenshot of element `element_id` as the browser rendered it on screen, an RGB numpy array (rows,
+        columns, 3) in CSS pixels (the headless window's device pixel ratio is 1)."""
+        png = self.driver.find_element(By.ID, element_id).screenshot_as_png
         return cv2.cvtColor(cv2.imdecode(numpy.frombuffer(png, numpy.uint8), cv2.IMREAD_COLOR), cv2.COLOR_BGR2RGB)
 
     def save_screenshot(self, path):

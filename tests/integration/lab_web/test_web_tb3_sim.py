@@ -105,7 +105,7 @@ def test_the_up_arrow_drives_the_robot_and_releasing_it_stops_it(robot, page):
     assert commands[-1] == 0.0 and max(commands) == pytest.approx(0.8 * 0.26)   # 80 % of the Waffle's top speed
 
 
-def test_a_click_on_the_floor_spawns_a_box_and_dragging_moves_it(page):
+def test_a_click_on_the_floor_spawns_a_box_dragging_moves_it_and_a_right_click_deletes_it(page):
     canvas = page.driver.find_element(By.ID, "world")
     origin = page.script("const r = arguments[0].getBoundingClientRect(); return [r.width / 2, r.height / 2];", canvas)
 
@@ -127,6 +127,10 @@ def test_a_click_on_the_floor_spawns_a_box_and_dragging_moves_it(page):
     wait_until(lambda: state("web_box_1", "").pose.position.y < -0.7, 10, "set_model_state to move the box")
     moved = state("web_box_1", "").pose.position
     assert math.hypot(moved.x + 0.5, moved.y + 0.8) <= 2 * metres_per_pixel
+    wait_until(lambda: page.script("return labView.models.some(m => m.name === 'web_box_1' && m.y < -0.7);"), 5,
+               "the page to show the box moved")
+    ActionChains(page.driver).move_to_element_with_offset(canvas, *offset(-0.5, -0.8)).context_click().perform()
+    wait_until(lambda: "web_box_1" not in world().model_names, 10, "delete_model to remove web_box_1")
 
 
 def test_clicking_a_topic_echoes_its_latest_message(page):
