@@ -185,6 +185,8 @@ class RosBridge:
         sim = rospy.get_time()
         wall = _now()
         samples = self._clock_samples
+        if samples and sim < samples[-1][1]:
+            samples.clear()   # time went back (/gazebo/reset_simulation): measure afresh
         samples.append((wall, sim))
         while len(samples) > 2 and wall - samples[1][0] >= RTF_WINDOW_S:
             samples.pop(0)

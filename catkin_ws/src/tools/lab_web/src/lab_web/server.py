@@ -77,7 +77,10 @@ class PageSession:
 
     async def send(self, text):
         async with self._send_lock:
-            await self.socket.send_str(text)
+            try:
+                await self.socket.send_str(text)
+            except ConnectionError:
+                pass   # the page went away mid-send: the socket's handler ends the session
 
     def _changed(self, name):
         versioned = getattr(self.bridge, name)
