@@ -13,8 +13,14 @@ REPO_ROOT = Path(__file__).resolve().parents[3]
 ROSTEST_TIMEOUT_S = 600
 
 
+REALTIME = {"beginner_tutorials/counter_action.test"}
+"""Files whose assertions need their processes on time: the counter's first feedback goes out as the goal is
+accepted, and a loaded machine may connect the client's feedback subscriber only after it."""
+
+
 def rostest_files():
-    return sorted((REPO_ROOT / "catkin_ws" / "src").glob("**/test/*.test"))
+    return [pytest.param(path, marks=pytest.mark.realtime) if rostest_id(path) in REALTIME else path
+            for path in sorted((REPO_ROOT / "catkin_ws" / "src").glob("**/test/*.test"))]
 
 
 def rostest_id(path):
@@ -22,7 +28,7 @@ def rostest_id(path):
     return "{}/{}".format(package_dir.name, path.name)
 
 
-@pytest.mark.parametrize("test_file", rostest_files(), ids=rostest_id)
+@pytest.mark.parametrize("test_file", rostest_files(), ids=lambda path: rostest_id(path))
 def test_rostest(test_file, tmp_path):
     env = dict(os.environ, ROS_HOME=str(tmp_path), ROS_LOG_DIR=str(tmp_path / "log"), PYTHONUNBUFFERED="1")
     result = subprocess.run(["rostest", str(test_file)], env=env, stdout=subprocess.PIPE,

@@ -53,6 +53,7 @@ def test_cancel_preempts_the_goal(ros_master, shape_server, probe):
     wait_until(lambda: "/turtle_shape: Preempted" in shape_server.output(), 5, "the Preempted log line")
 
 
+@pytest.mark.realtime   # turtlesim moves in wall time: the shape closes only if the server's timing holds
 def test_shape_client_finishes_the_pentagon(ros_master, shape_server, probe):
     rospy.ServiceProxy("/reset", Empty)()
     probe.take(RESULT)

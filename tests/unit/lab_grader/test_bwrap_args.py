@@ -62,3 +62,12 @@ def test_the_students_passwd_line_is_added_to_the_hosts(tmp_path):
     lines = passwd_with_student(61003, 61003, WORKSPACE, host).decode().splitlines()
     assert lines == ["root:x:0:0:root:/root:/bin/bash",
                      "student:x:61003:61003:lab_grader sandbox:{}:/bin/sh".format(WORKSPACE)]
+
+
+def test_a_lab_checked_out_below_tmp_is_bound_after_tmp_is_covered():
+    """A CI clone in /tmp: the private /tmp must not hide the lab (its venv, devel space and libraries)."""
+    lab = Path("/tmp/ci-clone")
+    argv = args(lab_root=lab)
+    lab_bind = [i for i, word in enumerate(argv) if word == "--ro-bind" and argv[i + 2] == str(lab)]
+    tmp_cover = [i for i, word in enumerate(argv) if word == "--tmpfs" and argv[i + 1] == "/tmp"]
+    assert lab_bind and tmp_cover and tmp_cover[0] < lab_bind[0]

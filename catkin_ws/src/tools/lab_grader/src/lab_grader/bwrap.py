@@ -19,9 +19,10 @@ namespaces it gets. The mount list is explicit so it can be reviewed line by lin
 Nothing else of the host exists inside: no /home, /root, /opt, /var, /run, /sys, /work/shared, no other mount.
 Everything under the lab root is readable by student code (as by any user of the lab): keep grading secrets and
 logs under the work root or outside the lab root.
-The order matters: /tmp and the work root are covered before the workspace (which lies below the work root, maybe
-below /tmp too) is bound back on top; then the work root's cover is made read-only, which does not reach the
-workspace's own mount. The lab root must not lie inside the work root (`SubmissionSandbox` checks).
+The order matters: /tmp and the work root are covered before the lab and the workspace are bound back on top
+(either may lie below /tmp, e.g. a CI checkout in /tmp; the workspace lies below the work root); then the work
+root's cover is made read-only, which does not reach the workspace's own mount. The lab root must not lie inside
+the work root (`SubmissionSandbox` checks).
 
 Namespaces: a new user namespace (bwrap runs unprivileged; further user namespaces are disabled inside), pid (the
 sandbox is pid 1's tree: its processes cannot see or signal anything outside, and all of them die with it), ipc,
@@ -56,13 +57,13 @@ def bwrap_args(*, lab_root: Path, work_root: Path, workspace: Path, cwd: Path, t
             args += ["--ro-bind", path, path]
     if passwd_fd is not None:
         args += ["--ro-bind-data", str(passwd_fd), "/etc/passwd"]
-    args += ["--ro-bind", str(lab_root), str(lab_root),
-             "--proc", "/proc",
+    args += ["--proc", "/proc",
              "--dev", "/dev",
              "--size", str(tmp_bytes), "--tmpfs", "/dev/shm",
              "--remount-ro", "/dev",
              "--size", str(tmp_bytes), "--tmpfs", "/tmp",
              "--size", str(WORK_ROOT_COVER_BYTES), "--tmpfs", str(work_root),
+             "--ro-bind", str(lab_root), str(lab_root),
              "--bind", str(workspace), str(workspace),
              "--remount-ro", str(work_root),
              "--chdir", str(cwd)]
