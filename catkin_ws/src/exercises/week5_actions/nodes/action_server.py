@@ -54,6 +54,7 @@ CAMERA_TOPIC = "/camera/rgb/image_raw/compressed"
 FIRST_IMAGE_GRACE_S = 5.0    # wall seconds a goal waits for the first camera image (the camera is lazy)
 STALE_IMAGE_S = 2.0          # wall seconds without a new image after which the camera counts as stopped
 IMAGE_BUFFER_BYTES = 2 ** 24
+LAST_FEEDBACK_LEAD_S = 0.1   # sim seconds between the last feedback and the result (see on_goal)
 
 
 class Sweep:
@@ -114,6 +115,10 @@ class CameraSweepServer:
             return
         rospy.loginfo("Sweep complete: %.1f degrees, %d images in %s, %.1f s.", sweep.turned_deg, sweep.captured,
                       sweep.folder_text, (rospy.get_rostime() - started).to_sec())
+        # Feedback and result reach the client on two connections: a short pause lets the last feedback arrive
+        # first, so a client prints every image's line before the result (SimpleActionClient drops feedback that
+        # comes after it).
+        rospy.sleep(LAST_FEEDBACK_LEAD_S)
         self.server.set_succeeded(CameraSweepResult(sweep.folder_text), "{} images saved".format(sweep.captured))
 
     def abort(self, text):

@@ -175,7 +175,8 @@ class SubmissionSandbox:
         symlinks are copied as symlinks, never followed. The workspace belongs to the student, so this root-run
         copy is refused while a student process runs (it could swap a folder for a symlink meanwhile), and when the
         destination already exists or its folder resolves outside the workspace (a symlink an earlier run made)."""
-        if self.student_processes():
+        # A started student command counts before it has switched to the slot's uid (setpriv runs first as root).
+        if self.student_processes() or any(process.sandboxed and process.running() for process in self._processes):
             raise SandboxError("copy into the workspace only while no student process runs")
         dest = self.workspace / relative_dest
         if os.path.lexists(dest) or not is_inside(Path(os.path.realpath(dest.parent)), self.workspace):

@@ -113,6 +113,11 @@ class SandboxProcess:
         self.argv = popen.args
 
     @property
+    def sandboxed(self) -> bool:
+        """True for a student's process (setpriv, prlimit and bwrap around the command)."""
+        return self._sandboxed
+
+    @property
     def pid(self) -> int:
         """The pid of the process the grader started (for a student's command: the outer bwrap)."""
         return self._popen.pid
