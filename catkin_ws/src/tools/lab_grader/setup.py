@@ -1,4 +1,4 @@
 from catkin_pkg.python_setup import generate_distutils_setup
 from setuptools import setup
 
-setup(**generate_distutils_setup(packages=["lab_grader"], package_dir={"": "src"}))
+setup(**generate_distutils_setup(packages=["lab_grader", "lab_grader.checks"], package_dir={"": "src"}))

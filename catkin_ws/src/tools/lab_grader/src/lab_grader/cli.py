@@ -1,0 +1,95 @@
+"""`rosrun lab_grader grade`: grade a class (or one submission, or one shard of a class) against a suite.
+
+    rosrun lab_grader grade submissions/ --suite week4 --out grades/              every student, 2 at a time
+    rosrun lab_grader grade alice.zip --suite week4 --out grades/                 one submission
+    rosrun lab_grader grade submissions/ --suite week4 --out grades/2 --shard 2/4     a job array's piece
+    rosrun lab_grader grade --merge grades/1 grades/2 grades/3 grades/4 --out grades/   the class files
+
+It must run as root (it makes a network namespace and a sandbox user per worker). Exit 0 when every submission
+was graded (whatever the scores), 2 for bad arguments or submissions that could not be read.
+"""
+import argparse
+import os
+import sys
+import tempfile
+from pathlib import Path
+
+import rospkg
+
+from lab_grader.batch import Progress, grade_all, parse_shard
+from lab_grader.class_report import read_results, write_class_report
+from lab_grader.grade import SubmissionGrader
+from lab_grader.submissions import find_submissions
+from lab_grader.suite_file import SuiteError, load_suite
+
+
+def lab_root() -> Path:
+    """The lab checkout: lab_grader lives in <lab>/catkin_ws/src/tools/lab_grader."""
+    return Path(rospkg.RosPack().get_path("lab_grader")).resolve().parents[3]
+
+
+def parse_args(argv):
+    parser = argparse.ArgumentParser(prog="grade", description=__doc__.split("\n\n")[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("paths", nargs="+", type=Path,
+                        help="a submission (a package folder, .zip or .tar.gz) or a folder of them, one per "
+                             "student; with --merge, the output folders of the shards")
+    parser.add_argument("--suite", default="week4", help="a suite name (week4) or a suite YAML file")
+    parser.add_argument("--out", type=Path, required=True, help="output folder (one subfolder per student)")
+    parser.add_argument("--jobs", "-j", type=int, default=os.cpu_count() or 1,
+                        help="submissions graded at once (default: the number of cores)")
+    parser.add_argument("--shard", help="K/N: grade only the K-th of N pieces of the class")
+    parser.add_argument("--rtf", type=float, help="simulator real-time factor (default: the suite's)")
+    parser.add_argument("--merge", action="store_true", help="combine shard output folders into the class files")
+    return parser.parse_args(argv)
+
+
+def main(argv=None):
+    args = parse_args(sys.argv[1:] if argv is None else argv)
+    if args.merge:
+        try:
+            results = read_results(args.paths)
+        except ValueError as error:
+            print("grade: {}".format(error), file=sys.stderr)
+            return 2
+        args.out.mkdir(parents=True, exist_ok=True)
+        write_class_report(results, args.out)
+        print("grade: merged {} students into {}".format(len(results), args.out))
+        return 0
+    if os.geteuid() != 0:
+        print("grade: must run as root (each submission gets its own network namespace and sandbox user)",
+              file=sys.stderr)
+        return 2
+    try:
+        suite = load_suite(args.suite)
+        shard = parse_shard(args.shard) if args.shard else None
+        if args.jobs < 1:
+            raise ValueError("--jobs must be at least 1")
+    except (SuiteError, ValueError) as error:
+        print("grade: {}".format(error), file=sys.stderr)
+        return 2
+    work_root = Path(tempfile.mkdtemp(prefix="lab_grader-"))
+    os.chmod(work_root, 0o711)   # the sandbox users must reach their own workspace inside
+    submissions, rejected = [], []
+    for path in args.paths:
+        scan = find_submissions(path, work_root / "sources")
+        submissions += scan.submissions
+        rejected += scan.rejected
+    for error in rejected:
+        print("grade: skipped {}".format(error), file=sys.stderr)
+    submissions.sort(key=lambda submission: submission.student_id)
+    if shard:
+        submissions = shard.pick(submissions)
+    args.out.mkdir(parents=True, exist_ok=True)
+    jobs = min(args.jobs, max(1, len(submissions)))
+    print("grade: {} submissions, suite {}, {} at a time{}".format(
+        len(submissions), suite.name, jobs, ", shard {}/{}".format(*shard) if shard else ""))
+
+    def make_grader(slot):
+        return SubmissionGrader(suite, work_root / "boxes", lab_root(), slot, dict(os.environ), args.rtf)
+
+    (work_root / "boxes").mkdir(mode=0o711)
+    grade_all(submissions, make_grader, args.out, jobs, Progress(len(submissions)))
+    write_class_report(read_results([args.out]), args.out)
+    print("grade: results in {} (class.csv, summary.json, one folder per student)".format(args.out))
+    return 2 if rejected else 0

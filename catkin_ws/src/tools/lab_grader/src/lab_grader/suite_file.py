@@ -1,0 +1,412 @@
+"""A grading suite as data: load and validate a suite YAML file (suites/<name>.yaml) into typed objects.
+
+Plain Python (PyYAML, and rospkg to find the package's suites/ folder). `load_suite("week4")` loads this package's
+suites/week4.yaml, `load_suite("path/to/file.yaml")` any file. Every unknown key and every bad value is a
+`SuiteError` naming the file and the key path (`week4.yaml: checks[2].expect.motion.forward_m.min: expected a
+finite number, got 'abc'`), so a typo in a suite fails loudly instead of silently grading with a default.
+
+The format (suites/week4.yaml is the worked example, with a comment on every key):
+
+    suite: week4                      # the suite's name (letters, digits, _ and -), written into the results
+    title: Week 4 - ROS Services      # optional, free text
+    world: approach_arena             # the tb3_sim world the orchestrator starts (roslaunch tb3_sim tb3_sim.launch
+                                      #   world:=approach_arena)
+    real_time_factor: 1.0             # optional (1.0): the simulator speed the orchestrator grades at
+    settle_s: 1.0                     # optional (1.0): sim s recorded after each reply; "left still" is judged then
+    timeout_s: 30                     # optional (30): default reply timeout of a check, sim s
+    still_timeout_s: 10               # optional (10): wall s to wait for the robot to rest before a check
+    by_type_grace_s: 3                # optional (3): wall s to keep waiting for the course's name once only a
+                                      #   service of the right type (another name) is on the master
+    services:                         # what the course asks the student to serve
+      - name: /move_service           # the name the course asks for (absolute)
+        type: tuos_msgs/SetBool       # its type; another type with the same md5sum is accepted by type
+        wait_s: 30                    # optional (30): wall s to wait for it to appear on the master
+    nodes:                            # what the course has the student start (for the orchestrator): the file
+      - move_server.py                #   names the course uses (rosrun <package> move_server.py)
+    checks:
+      - id: move_true                 # unique; lower case, digits and _
+        title: ...                    # one line for the report
+        weight: 16                    # points (>= 0) a pass is worth
+        service: /move_service        # one of services[].name
+        request: {request_signal: true}   # request fields (bool, int, float incl. .nan, str)
+        timeout_s: 15                 # optional (suite's timeout_s): sim s to wait for the reply
+        expect:                       # optional: nothing = any reply passes
+          reply: {response_signal: true}          # reply fields that must be equal
+          reply_matches: {response_message: "(?i)stop"}   # reply fields that must match a regex (re.search)
+          motion:                     # see lab_grader.checks.motion for the quantities
+            forward_m: {value: 0.5, tolerance: 0.1}   # a range: {value, tolerance} or {min} / {max} / {min, max}
+            lateral_max_m: 0.05       # |lateral_m| <= this
+            turn_deg: {min: 5}        # signed heading change range (CCW positive)
+            turn_max_deg: 5           # |turn_deg| <= this
+            duration_s: {value: 5, tolerance: 0.5}    # motion start to stop, sim s
+            excursion_max_m: 0.01     # never farther than this from the start ("no motion")
+            still_at_end: true        # |v| < 0.01 m/s and |w| < 0.01 rad/s settle_s after the reply
+          front_distance_m: {value: 0.4, tolerance: 0.05}  # closest LiDAR return within +-20 deg, once still
+"""
+import math
+import re
+from pathlib import Path
+from typing import Any, Dict, List, NamedTuple, Optional, Tuple
+
+import rospkg
+import yaml
+
+from lab_grader.errors import GraderError
+
+PACKAGE = "lab_grader"
+SUITE_SUFFIX = ".yaml"
+DEFAULT_REAL_TIME_FACTOR = 1.0
+DEFAULT_SETTLE_S = 1.0
+DEFAULT_TIMEOUT_S = 30.0
+DEFAULT_STILL_TIMEOUT_S = 10.0
+DEFAULT_BY_TYPE_GRACE_S = 3.0
+DEFAULT_WAIT_S = 30.0
+SUITE_NAME = re.compile(r"^[A-Za-z0-9_-]+$")
+CHECK_ID = re.compile(r"^[a-z][a-z0-9_]*$")
+FIELD_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
+SERVICE_NAME = re.compile(r"^(/[A-Za-z][A-Za-z0-9_]*)+$")
+FILE_NAME = re.compile(r"^[A-Za-z0-9_.+-]+$")
+TYPE_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*/[A-Za-z][A-Za-z0-9_]*$")
+SUITE_KEYS = ("suite", "title", "world", "real_time_factor", "settle_s", "timeout_s", "still_timeout_s",
+              "by_type_grace_s", "services", "nodes", "checks")
+SERVICE_KEYS = ("name", "type", "wait_s")
+CHECK_KEYS = ("id", "title", "weight", "service", "request", "timeout_s", "expect")
+EXPECT_KEYS = ("reply", "reply_matches", "motion", "front_distance_m")
+RANGE_KEYS = ("min", "max", "value", "tolerance")
+
+
+class SuiteError(GraderError):
+    """A suite file that cannot be used; the message names the file and the key."""
+
+
+class Range(NamedTuple):
+    """A closed interval; either end may be open (None)."""
+
+    min: Optional[float]
+    max: Optional[float]
+
+    def contains(self, value):
+        return (value is not None and math.isfinite(value) and (self.min is None or value >= self.min)
+                and (self.max is None or value <= self.max))
+
+    def describe(self, unit=""):
+        """'0.40..0.60 m', 'at least 5 deg', 'at most 0.05 m'."""
+        suffix = " " + unit if unit else ""
+        if self.min is not None and self.max is not None:
+            return "{:g}..{:g}{}".format(self.min, self.max, suffix)
+        if self.min is not None:
+            return "at least {:g}{}".format(self.min, suffix)
+        return "at most {:g}{}".format(self.max, suffix)
+
+
+class MotionExpectation(NamedTuple):
+    forward_m: Optional[Range] = None
+    lateral_max_m: Optional[float] = None
+    turn_deg: Optional[Range] = None
+    turn_max_deg: Optional[float] = None
+    duration_s: Optional[Range] = None
+    excursion_max_m: Optional[float] = None
+    still_at_end: Optional[bool] = None
+
+
+class Expectation(NamedTuple):
+    reply: Dict[str, Any]
+    reply_matches: Dict[str, "re.Pattern"]
+    motion: Optional[MotionExpectation]
+    front_distance_m: Optional[Range]
+
+
+class ServiceSpec(NamedTuple):
+    name: str
+    type: str
+    wait_s: float
+
+
+class CheckSpec(NamedTuple):
+    id: str
+    title: str
+    weight: float
+    service: str
+    request: Dict[str, Any]
+    timeout_s: float
+    expect: Expectation
+
+
+class Suite(NamedTuple):
+    name: str
+    title: str
+    path: Path
+    world: str
+    real_time_factor: float
+    settle_s: float
+    still_timeout_s: float
+    by_type_grace_s: float
+    services: Tuple[ServiceSpec, ...]
+    nodes: Tuple[str, ...]
+    checks: Tuple[CheckSpec, ...]
+
+    @property
+    def max_score(self):
+        """The sum of the checks' weights (an int when they are whole numbers)."""
+        total = sum(check.weight for check in self.checks)
+        return int(total) if float(total).is_integer() else total
+
+    def service(self, name):
+        return next(service for service in self.services if service.name == name)
+
+
+class _Mapping:
+    """A YAML mapping being read, with its key path for error messages. Keys outside `allowed` are rejected at
+    once, before any value is read, so a misspelt key is reported as such rather than as a missing one."""
+
+    def __init__(self, file_label, path, data, allowed):
+        self.file_label = file_label
+        self.path = path
+        if not isinstance(data, dict):
+            self.fail(path, "expected a mapping, got {}".format(_show(data)))
+        for key in data:
+            if not isinstance(key, str):
+                self.fail(path, "keys must be strings, got {}".format(_show(key)))
+        unknown = sorted(set(data) - set(allowed))
+        if unknown:
+            self.fail(self.where(unknown[0]), "unknown key (allowed: {})".format(", ".join(sorted(allowed))))
+        self.data = data
+
+    def where(self, key):
+        return "{}.{}".format(self.path, key) if self.path else key
+
+    def fail(self, where, problem):
+        raise SuiteError("{}: {}: {}".format(self.file_label, where or "(top level)", problem))
+
+    def get(self, key, convert, default=None, required=False):
+        """`convert(value, where)` of `key`, `default` when absent (SuiteError if `required`)."""
+        if key not in self.data:
+            if required:
+                self.fail(self.where(key), "missing (required)")
+            return default
+        return convert(self.data[key], self.where(key))
+
+
+def _show(value):
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+class _Converters:
+    """Value checks bound to one file, each `(value, where) -> typed value` or SuiteError naming `where`."""
+
+    def __init__(self, file_label):
+        self.file_label = file_label
+
+    def fail(self, where, problem):
+        raise SuiteError("{}: {}: {}".format(self.file_label, where, problem))
+
+    def number(self, value, where, minimum=None, positive=False):
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+            self.fail(where, "expected a finite number, got {}".format(_show(value)))
+        if positive and value <= 0:
+            self.fail(where, "must be > 0, got {}".format(_show(value)))
+        if minimum is not None and value < minimum:
+            self.fail(where, "must be >= {}, got {}".format(minimum, _show(value)))
+        return float(value) if isinstance(value, float) else value
+
+    def positive(self, value, where):
+        return float(self.number(value, where, positive=True))
+
+    def non_negative(self, value, where):
+        return self.number(value, where, minimum=0)
+
+    def text(self, value, where, pattern=None, what=None):
+        if not isinstance(value, str) or not value.strip():
+            self.fail(where, "expected a non-empty string, got {}".format(_show(value)))
+        if pattern is not None and not pattern.match(value):
+            self.fail(where, "{} is not {}".format(_show(value), what))
+        return value
+
+    def boolean(self, value, where):
+        if not isinstance(value, bool):
+            self.fail(where, "expected true or false, got {}".format(_show(value)))
+        return value
+
+    def scalar(self, value, where):
+        if not isinstance(value, (bool, int, float, str)):
+            self.fail(where, "expected a bool, number or string, got {}".format(_show(value)))
+        return value
+
+    def regex(self, value, where):
+        self.text(value, where)
+        try:
+            return re.compile(value)
+        except re.error as error:
+            self.fail(where, "not a valid regular expression ({})".format(error))
+
+    def fields(self, value, where, convert):
+        """A mapping of request/reply field names to values."""
+        if not isinstance(value, dict):
+            self.fail(where, "expected a mapping of field names, got {}".format(_show(value)))
+        result = {}
+        for key, item in value.items():
+            if not isinstance(key, str) or not FIELD_NAME.match(key):
+                self.fail(where, "{} is not a field name".format(_show(key)))
+            result[key] = convert(item, "{}.{}".format(where, key))
+        return result
+
+    def range(self, value, where):
+        mapping = _Mapping(self.file_label, where, value, RANGE_KEYS)
+        low = mapping.get("min", self.number)
+        high = mapping.get("max", self.number)
+        centre = mapping.get("value", self.number)
+        tolerance = mapping.get("tolerance", self.non_negative)
+        if centre is not None or tolerance is not None:
+            if centre is None or tolerance is None or low is not None or high is not None:
+                self.fail(where, "give either value and tolerance, or min and/or max")
+            return Range(float(centre - tolerance), float(centre + tolerance))
+        if low is None and high is None:
+            self.fail(where, "give either value and tolerance, or min and/or max")
+        if low is not None and high is not None and low > high:
+            self.fail(where, "min {} is greater than max {}".format(low, high))
+        return Range(None if low is None else float(low), None if high is None else float(high))
+
+
+def default_suites_dir() -> Path:
+    """This package's suites/ folder: rospack's lab_grader, else the one next to this source tree."""
+    try:
+        return Path(rospkg.RosPack().get_path(PACKAGE)) / "suites"
+    except rospkg.ResourceNotFound:
+        return Path(__file__).resolve().parents[2] / "suites"
+
+
+def load_suite(name_or_path, suites_dir=None) -> Suite:
+    """Read and validate a suite: a name (`week4`: <suites_dir>/week4.yaml, by default this package's suites/) or
+    a file path. SuiteError naming the file and key on any problem."""
+    path = resolve_suite(name_or_path, default_suites_dir() if suites_dir is None else suites_dir)
+    label = path.name
+    try:
+        data = yaml.safe_load(path.read_text(encoding="utf-8"))
+    except OSError as error:
+        raise SuiteError("{}: cannot read: {}".format(path, error.strerror or error)) from None
+    except yaml.YAMLError as error:
+        raise SuiteError("{}: not valid YAML: {}".format(label, " ".join(str(error).split()))) from None
+    return parse_suite(data, path)
+
+
+def parse_suite(data, path) -> Suite:
+    """Validate already-parsed YAML `data` (from the file at `path`, named in errors)."""
+    path = Path(path)
+    label = path.name
+    convert = _Converters(label)
+    top = _Mapping(label, "", data, SUITE_KEYS)
+    name = top.get("suite", lambda v, w: convert.text(v, w, SUITE_NAME, "a suite name (letters, digits, _, -)"),
+                   required=True)
+    title = top.get("title", convert.text, default=name)
+    world = top.get("world", convert.text, required=True)
+    real_time_factor = top.get("real_time_factor", convert.positive, default=DEFAULT_REAL_TIME_FACTOR)
+    settle_s = top.get("settle_s", convert.non_negative, default=DEFAULT_SETTLE_S)
+    default_timeout_s = top.get("timeout_s", convert.positive, default=DEFAULT_TIMEOUT_S)
+    still_timeout_s = top.get("still_timeout_s", convert.positive, default=DEFAULT_STILL_TIMEOUT_S)
+    by_type_grace_s = top.get("by_type_grace_s", convert.non_negative, default=DEFAULT_BY_TYPE_GRACE_S)
+    services = top.get("services", lambda v, w: _services(convert, v, w), required=True)
+    names = [service.name for service in services]
+    nodes = top.get("nodes", lambda v, w: _nodes(convert, v, w), default=())
+    checks = top.get("checks", lambda v, w: _checks(convert, v, w, names, default_timeout_s), required=True)
+    return Suite(name=name, title=title, path=path, world=world, real_time_factor=real_time_factor,
+                 settle_s=float(settle_s),
+                 still_timeout_s=still_timeout_s, by_type_grace_s=float(by_type_grace_s), services=services,
+                 nodes=nodes, checks=checks)
+
+
+def _items(convert, value, where):
+    if not isinstance(value, list) or not value:
+        convert.fail(where, "expected a non-empty list, got {}".format(_show(value)))
+    return [("{}[{}]".format(where, index), item) for index, item in enumerate(value)]
+
+
+def _services(convert, value, where) -> Tuple[ServiceSpec, ...]:
+    result: List[ServiceSpec] = []
+    for item_where, item in _items(convert, value, where):
+        entry = _Mapping(convert.file_label, item_where, item, SERVICE_KEYS)
+        name = entry.get("name", lambda v, w: convert.text(v, w, SERVICE_NAME, "an absolute ROS name (/a/b)"),
+                         required=True)
+        srv_type = entry.get("type", lambda v, w: convert.text(v, w, TYPE_NAME, "a service type (package/Type)"),
+                             required=True)
+        wait_s = entry.get("wait_s", convert.non_negative, default=DEFAULT_WAIT_S)
+        if any(service.name == name for service in result):
+            convert.fail(entry.where("name"), "service {} is listed twice".format(name))
+        result.append(ServiceSpec(name, srv_type, float(wait_s)))
+    return tuple(result)
+
+
+def _nodes(convert, value, where) -> Tuple[str, ...]:
+    result = []
+    for item_where, item in _items(convert, value, where):
+        name = convert.text(item, item_where, FILE_NAME, "a file name (no folders)")
+        if name in result:
+            convert.fail(item_where, "{} is listed twice".format(name))
+        result.append(name)
+    return tuple(result)
+
+
+def _service_ref(convert, value, where, service_names):
+    if value not in service_names:
+        convert.fail(where, "{} is not one of the suite's services ({})".format(_show(value), ", ".join(service_names)))
+    return value
+
+
+def _checks(convert, value, where, service_names, default_timeout_s) -> Tuple[CheckSpec, ...]:
+    result: List[CheckSpec] = []
+    for item_where, item in _items(convert, value, where):
+        entry = _Mapping(convert.file_label, item_where, item, CHECK_KEYS)
+        check_id = entry.get("id", lambda v, w: convert.text(v, w, CHECK_ID, "a check id (a-z, 0-9, _)"),
+                             required=True)
+        if any(check.id == check_id for check in result):
+            convert.fail(entry.where("id"), "check id {} is used twice".format(check_id))
+        title = entry.get("title", convert.text, required=True)
+        weight = entry.get("weight", convert.non_negative, required=True)
+        service = entry.get("service", lambda v, w: _service_ref(convert, v, w, service_names), required=True)
+        request = entry.get("request", lambda v, w: convert.fields(v, w, convert.scalar), default={})
+        timeout_s = entry.get("timeout_s", convert.positive, default=default_timeout_s)
+        expect = entry.get("expect", lambda v, w: _expectation(convert, v, w), default=_expectation(convert))
+        result.append(CheckSpec(check_id, title, weight, service, request, float(timeout_s), expect))
+    return tuple(result)
+
+
+def _expectation(convert, value=None, where="expect") -> Expectation:
+    if value is None:
+        return Expectation({}, {}, None, None)
+    mapping = _Mapping(convert.file_label, where, value, EXPECT_KEYS)
+    reply = mapping.get("reply", lambda v, w: convert.fields(v, w, convert.scalar), default={})
+    matches = mapping.get("reply_matches", lambda v, w: convert.fields(v, w, convert.regex), default={})
+    motion = mapping.get("motion", lambda v, w: _motion(convert, v, w))
+    front = mapping.get("front_distance_m", convert.range)
+    return Expectation(reply, matches, motion, front)
+
+
+def _motion(convert, value, where) -> MotionExpectation:
+    mapping = _Mapping(convert.file_label, where, value, MotionExpectation._fields)
+    return MotionExpectation(
+        forward_m=mapping.get("forward_m", convert.range),
+        lateral_max_m=mapping.get("lateral_max_m", convert.non_negative),
+        turn_deg=mapping.get("turn_deg", convert.range),
+        turn_max_deg=mapping.get("turn_max_deg", convert.non_negative),
+        duration_s=mapping.get("duration_s", convert.range),
+        excursion_max_m=mapping.get("excursion_max_m", convert.non_negative),
+        still_at_end=mapping.get("still_at_end", convert.boolean),
+    )
+
+
+def resolve_suite(name_or_path, suites_dir) -> Path:
+    """The suite file for `name_or_path`: an existing path (or anything with a / or ending in .yaml) is a path,
+    anything else a name looked up as <suites_dir>/<name>.yaml. SuiteError listing the known names if missing."""
+    text = str(name_or_path)
+    candidate = Path(text)
+    if "/" in text or text.endswith(SUITE_SUFFIX) or candidate.is_file():
+        if not candidate.is_file():
+            raise SuiteError("{}: no such suite file".format(text))
+        return candidate
+    if not SUITE_NAME.match(text):
+        raise SuiteError("{!r} is neither a suite name nor a suite file".format(text))
+    path = Path(suites_dir) / (text + SUITE_SUFFIX)
+    if not path.is_file():
+        known = sorted(p.stem for p in Path(suites_dir).glob("*" + SUITE_SUFFIX))
+        raise SuiteError("no suite named {!r} in {} (known: {})".format(text, suites_dir, ", ".join(known) or "none"))
+    return path
