@@ -16,15 +16,13 @@ camera), lab_web's server (rosrun lab_web web_server on a free port) and ONE hea
 import sys
 import tempfile
 import time
-import urllib.error
-import urllib.request
 from pathlib import Path
 
 import numpy
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from roslab import RosMaster, free_port, wait_for_service, wait_for_topic, wait_until  # noqa: E402
+from roslab import RosMaster, free_port, http_status, wait_for_service, wait_for_topic, wait_until  # noqa: E402
 from roslab.browser import HeadlessBrowser  # noqa: E402
 from roslab.graph import node_pid  # noqa: E402
 from roslab.processes import cpu_seconds  # noqa: E402
@@ -39,15 +37,6 @@ FPS_TARGET = 20.0
 DEMO = ("week4_services", "week4_demo.launch", "gui:=false", "camera_width:=320", "camera_height:=240")
 
 
-def _http_status(url):
-    """The HTTP status of GET `url`, or None while nothing answers."""
-    try:
-        with urllib.request.urlopen(url, timeout=2) as response:
-            return response.status
-    except urllib.error.HTTPError as error:
-        return error.code
-    except OSError:
-        return None
 
 
 def start_web_server(master):
@@ -55,7 +44,7 @@ def start_web_server(master):
     port = free_port()
     server = master.rosrun("lab_web", "web_server", "_port:={}".format(port))
     base = "http://127.0.0.1:{}/".format(port)
-    wait_until(lambda: _http_status(base + "static/app.js") == 200 or not server.running(), 30, "lab_web to serve")
+    wait_until(lambda: http_status(base + "static/app.js") == 200 or not server.running(), 30, "lab_web to serve")
     if not server.running():
         raise RuntimeError("lab_web's web_server exited:\n" + server.output())
     return base

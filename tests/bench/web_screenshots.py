@@ -14,8 +14,6 @@ Both are 1400 px wide and as tall as the whole page.
 import sys
 import tempfile
 import time
-import urllib.error
-import urllib.request
 from pathlib import Path
 
 from selenium.webdriver.common.action_chains import ActionChains
@@ -23,7 +21,7 @@ from selenium.webdriver.common.by import By
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from roslab import RosMaster, free_port, wait_for_service, wait_for_topic, wait_until  # noqa: E402
+from roslab import RosMaster, free_port, http_status, wait_for_service, wait_for_topic, wait_until  # noqa: E402
 from roslab.browser import HeadlessBrowser  # noqa: E402
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
@@ -39,14 +37,6 @@ def say(text):
     print("web_screenshots: " + text, flush=True)
 
 
-def http_status(url):
-    try:
-        with urllib.request.urlopen(url, timeout=2) as response:
-            return response.status
-    except urllib.error.HTTPError as error:
-        return error.code
-    except OSError:
-        return None
 
 
 def new_browser():

@@ -1,23 +1,10 @@
 """lab_web's test fixtures: the web server as a user starts it (rosrun lab_web web_server, on a free port) and a
 real headless Chromium to open its page."""
-import urllib.error
-import urllib.request
 
 import pytest
 
-from roslab import free_port, wait_until
+from roslab import free_port, http_status, wait_until
 from roslab.browser import HeadlessBrowser
-
-
-def http_status(url):
-    """The HTTP status of GET `url`, or None while nothing answers."""
-    try:
-        with urllib.request.urlopen(url, timeout=2) as response:
-            return response.status
-    except urllib.error.HTTPError as error:
-        return error.code
-    except OSError:
-        return None
 
 
 def start_web_server(ros_master, *params):

@@ -7,9 +7,9 @@ import re
 import aiohttp
 import pytest
 
-from roslab import free_port, wait_until
+from roslab import free_port, http_status, wait_until
 
-from .conftest import http_status, open_page, start_web_server
+from .conftest import open_page, start_web_server
 
 
 async def socket_status(url, **headers):

@@ -15,10 +15,10 @@ from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 
-from roslab import wait_for_service, wait_until
+from roslab import http_status, wait_for_service, wait_until
 from roslab.robot_view import RobotView, pose_of
 
-from .conftest import http_status, open_page, start_web_server
+from .conftest import open_page, start_web_server
 
 STOP_WITHIN_S = 0.5
 SEED = 20261124

@@ -5,9 +5,9 @@ from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 
-from roslab import free_port, wait_for_topic, wait_until
+from roslab import free_port, http_status, wait_for_topic, wait_until
 
-from .conftest import http_status, open_page
+from .conftest import open_page
 
 BACKGROUND_RGB = (69, 86, 255)
 PEN_RGB = (179, 184, 255)

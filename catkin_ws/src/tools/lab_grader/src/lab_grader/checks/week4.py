@@ -60,23 +60,23 @@ def turn_words(turn_deg):
     return "turned {} {:.1f} deg".format("counter-clockwise" if turn_deg > 0 else "clockwise", abs(turn_deg))
 
 
-def expected_travel(wanted):
-    """'forwards 0.4..0.6 m', 'backwards at least 0.05 m', or a plain signed range."""
+def _expected_signed(wanted, unit, positive, negative, either):
+    """A signed range in words: `positive` or `negative` with the range made positive, or `either` with it."""
     if wanted.min is not None and wanted.min > 0:
-        return "forwards " + wanted.describe("m")
+        return positive + " " + wanted.describe(unit)
     if wanted.max is not None and wanted.max < 0:
         flipped = type(wanted)(-wanted.max, None if wanted.min is None else -wanted.min)
-        return "backwards " + flipped.describe("m")
-    return "a signed distance of " + wanted.describe("m")
+        return negative + " " + flipped.describe(unit)
+    return either + " " + wanted.describe(unit)
+
+
+def expected_travel(wanted):
+    """'forwards 0.4..0.6 m', 'backwards at least 0.05 m', or a plain signed range."""
+    return _expected_signed(wanted, "m", "forwards", "backwards", "a signed distance of")
 
 
 def expected_turn(wanted):
-    if wanted.min is not None and wanted.min > 0:
-        return "counter-clockwise " + wanted.describe("deg")
-    if wanted.max is not None and wanted.max < 0:
-        flipped = type(wanted)(-wanted.max, None if wanted.min is None else -wanted.min)
-        return "clockwise " + flipped.describe("deg")
-    return "a signed heading change of " + wanted.describe("deg")
+    return _expected_signed(wanted, "deg", "counter-clockwise", "clockwise", "a signed heading change of")
 
 
 def shown(value):
