@@ -9,7 +9,7 @@ TESTS_DIR = Path(__file__).resolve().parent
 REPO_ROOT = TESTS_DIR.parent
 sys.path.insert(0, str(TESTS_DIR))
 
-from roslab import RosMaster  # noqa: E402  (needs the sys.path entry above)
+from roslab import private_master  # noqa: E402  (needs the sys.path entry above)
 
 
 def pytest_configure(config):
@@ -41,17 +41,12 @@ def pytest_collection_modifyitems(config, items):
 
 
 @pytest.fixture(scope="module")
-def ros_master(tmp_path_factory, monkeypatch_module):
+def ros_master(tmp_path_factory):
     """A private roscore on a free port for this test module; every process started through it is ended
     when the module's tests are done. The test process's own ROS_MASTER_URI points at it too, so
     rospy.ServiceProxy calls (which need no init_node) reach it."""
-    master = RosMaster(tmp_path_factory.mktemp("ros"))
-    monkeypatch_module.setenv("ROS_MASTER_URI", master.uri)
-    monkeypatch_module.setenv("ROS_HOSTNAME", "localhost")
-    try:
+    with private_master(tmp_path_factory.mktemp("ros")) as master:
         yield master
-    finally:
-        master.shutdown()
 
 
 @pytest.fixture(scope="module")

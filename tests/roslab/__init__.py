@@ -1,7 +1,7 @@
 """Test helpers for a real ROS 1 graph: a private master per test module, node and launch processes that
 are always ended, waiting with timeouts, and a probe node that reads and writes topics for the test."""
-from roslab.http import http_status
-from roslab.master import RosMaster, free_port
+from roslab.http_check import http_status
+from roslab.master import RosMaster, free_port, private_master
 from roslab.probe import TopicProbe
 from roslab.processes import RosProcess
 from roslab.waiting import (
@@ -13,5 +13,5 @@ from roslab.waiting import (
     wait_until,
 )
 
-__all__ = ["RosMaster", "RosProcess", "TopicProbe", "free_port", "http_status", "service_uri", "wait_for_param",
-           "wait_for_service", "wait_for_service_gone", "wait_for_topic", "wait_until"]
+__all__ = ["RosMaster", "RosProcess", "TopicProbe", "free_port", "http_status", "private_master", "service_uri",
+           "wait_for_param", "wait_for_service", "wait_for_service_gone", "wait_for_topic", "wait_until"]

@@ -3,6 +3,7 @@
 Never the user's 11311: the port comes from the kernel. The environment for child processes points at this
 master, binds to localhost and keeps ROS logs in a temporary folder.
 """
+import contextlib
 import os
 import socket
 
@@ -70,3 +71,21 @@ class RosMaster:
         """End every process this master started (nodes and probes first, roscore last)."""
         for process in reversed(self._processes):
             process.stop()
+
+
+@contextlib.contextmanager
+def private_master(workdir):
+    """A RosMaster in `workdir` that this process's own rospy calls (ServiceProxy needs no init_node) reach through
+    ROS_MASTER_URI and ROS_HOSTNAME until the block ends; then its processes are ended and the variables restored."""
+    saved = {name: os.environ.get(name) for name in ("ROS_MASTER_URI", "ROS_HOSTNAME")}
+    master = RosMaster(workdir)
+    os.environ.update(ROS_MASTER_URI=master.uri, ROS_HOSTNAME="localhost")
+    try:
+        yield master
+    finally:
+        master.shutdown()
+        for name, value in saved.items():
+            if value is None:
+                os.environ.pop(name, None)
+            else:
+                os.environ[name] = value

@@ -12,7 +12,7 @@ import pytest
 
 from lab_grader import procfs
 from lab_grader.errors import SandboxError
-from lab_grader.sandbox import SubmissionSandbox
+from lab_grader.sandbox import STUDENT_NICENESS, SubmissionSandbox
 from lab_grader.sandbox_process import StopReason
 
 from .conftest import LAB_ROOT, SLOT_A, TEST_LIMITS, last_json
@@ -204,6 +204,13 @@ def test_a_short_output_is_kept_whole(box, env, tmp_path):
     result = box.run_student(["sh", "-c", "echo out; echo err >&2; exit 3"], env, tmp_path / "short.log")
     assert result.returncode == 3 and result.stop_reason is None and not result.truncated
     assert sorted((tmp_path / "short.log").read_text().split()) == ["err", "out"]
+
+
+def test_student_processes_run_below_the_trusted_ones(box, env, tmp_path):
+    """Niceness 10: a busy-waiting student must not starve the simulator that measures it (stat field 19)."""
+    result = box.run_student(["sh", "-c", "cat /proc/self/stat"], env, tmp_path / "stat.log")
+    assert result.ok
+    assert (tmp_path / "stat.log").read_text().rsplit(")", 1)[1].split()[16] == str(STUDENT_NICENESS)
 
 
 PACKAGE_XML = """<?xml version="1.0"?>

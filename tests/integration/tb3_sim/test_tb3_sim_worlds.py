@@ -14,7 +14,7 @@ import rospy
 from gazebo_msgs.srv import GetModelState, GetWorldProperties
 from std_srvs.srv import Empty
 
-from roslab import RosProcess, wait_for_service, wait_for_service_gone, wait_until
+from roslab import RosProcess, private_master, wait_for_service, wait_until
 
 SCAN_X_M = -0.064
 ANGLE_INCREMENT_RAD = 6.28319 / 359
@@ -82,9 +82,19 @@ WORLDS = {
 
 
 @pytest.fixture(scope="module", params=sorted(WORLDS))
-def world(request, ros_master, tmp_path_factory):
+def world_master(request, tmp_path_factory):
+    """(world name, a master of the world's own). With one master for all worlds, the master once sent an XML-RPC
+    update meant for a node of the previous world to the port that node had used, which the new simulator's TCPROS
+    server had been given meanwhile; rospy's server read the request as a connection header and stopped accepting
+    connections."""
+    with private_master(tmp_path_factory.mktemp("ros")) as master:
+        yield request.param, master
+
+
+@pytest.fixture(scope="module")
+def world(world_master, tmp_path_factory):
     """One world's launch file running with TURTLEBOT3_MODEL=waffle, its robot spawned; ended after its tests."""
-    name = request.param
+    name, ros_master = world_master
     env = dict(ros_master.env, TURTLEBOT3_MODEL="waffle")
     log = tmp_path_factory.mktemp("launch") / f"{name}.log"
     process = RosProcess(["roslaunch", "--wait", "turtlebot3_gazebo", f"{name}.launch", "gui:=false",
@@ -95,7 +105,12 @@ def world(request, ros_master, tmp_path_factory):
         yield name
     finally:
         process.stop()
-        wait_for_service_gone(ros_master.uri, "/gazebo/get_world_properties")
+
+
+@pytest.fixture(scope="module")
+def probe(world_master):
+    """A probe node on the world's own master."""
+    return world_master[1].probe()
 
 
 def model_names():

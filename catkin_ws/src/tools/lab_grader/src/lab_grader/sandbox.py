@@ -17,6 +17,7 @@ Isolation, layer by layer:
 - File system and processes: bubblewrap (`bwrap.bwrap_args`): the host read-only, the box's workspace read-write,
   a private /tmp and /dev/shm, the work root (every other submission) hidden, its own pid namespace (the grader's
   processes are not even visible).
+- Priority: student processes run at niceness STUDENT_NICENESS, below the trusted simulator and checks.
 - Resources (`Limits`, set with `prlimit` on the student's process tree): CPU seconds, address space and file size
   per process; processes and threads of the slot's uid all together (so a node left running counts against the
   next command of the same box); open files; a wall-clock timeout per run; a capped log.
@@ -65,6 +66,9 @@ CPU_HARD_GRACE_S = 1
 # How long cleanup keeps killing before it declares a process unkillable (a process in uninterruptible sleep).
 KILL_TIMEOUT_S = 10.0
 WORKSPACE_MODE = 0o700
+# Student processes run at this niceness: a busy-waiting callback must not starve the box's simulator and checks
+# (which would turn one student's mistake into wrong motion measurements); CPU time limits still apply.
+STUDENT_NICENESS = 10
 # Slot locks are machine-wide (not per work root): two graders must never share a uid.
 SLOT_LOCK_DIR = Path("/run/lab_grader")
 SLOT_LOCK_NAME = "slot-{}.lock"
@@ -94,7 +98,7 @@ class SubmissionSandbox:
         self.keep_workspace = keep_workspace
         self.uid = self.gid = STUDENT_UID_BASE + slot
         self.workspace: Optional[Path] = None
-        self._tools = {name: find_tool(name) for name in ("nsenter", "setpriv", "prlimit", "bwrap")}
+        self._tools = {name: find_tool(name) for name in ("nsenter", "setpriv", "prlimit", "nice", "bwrap")}
         self._netns: Optional[NetnsHolder] = None
         self._namespace: Optional[str] = None  # kept: cleanup needs it even if the holder died
         self._lock_fd: Optional[int] = None
@@ -260,7 +264,7 @@ class SubmissionSandbox:
                 "--nproc={}".format(limits.processes),
                 "--fsize={}".format(limits.file_bytes),
                 "--nofile={}".format(limits.open_files),
-                "--core=0", "--"]
+                "--core=0", "--", self._tools["nice"], "-n", str(STUDENT_NICENESS)]
 
     def _track(self, process: SandboxProcess) -> SandboxProcess:
         self._processes.append(process)
