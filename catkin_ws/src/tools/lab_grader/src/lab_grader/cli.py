@@ -10,6 +10,7 @@ was graded (whatever the scores), 2 for bad arguments or submissions that could 
 """
 import argparse
 import os
+import shutil
 import sys
 import tempfile
 from pathlib import Path
@@ -70,6 +71,14 @@ def main(argv=None):
         return 2
     work_root = Path(tempfile.mkdtemp(prefix="lab_grader-"))
     os.chmod(work_root, 0o711)   # the sandbox users must reach their own workspace inside
+    try:
+        return grade_class(args, suite, shard, work_root)
+    finally:
+        shutil.rmtree(work_root, ignore_errors=True)   # unpacked submissions and empty box folders
+
+
+def grade_class(args, suite, shard, work_root):
+    """Grade the submissions `args.paths` name (this shard of them) with `work_root` as scratch space."""
     submissions, rejected = [], []
     for path in args.paths:
         scan = find_submissions(path, work_root / "sources")
