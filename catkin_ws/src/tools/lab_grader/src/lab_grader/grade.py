@@ -12,12 +12,12 @@ Logs are written by the grader outside the student's workspace, under the submis
 import json
 import os
 import time
-import xml.etree.ElementTree as ElementTree
 from pathlib import Path
 from typing import Dict, List, NamedTuple, Optional
 
 from lab_grader.html_report import report_html
 from lab_grader.sandbox import Limits, SubmissionSandbox
+from lab_grader.submissions import read_package_name
 
 BUILD_TIMEOUT_S = 300.0
 SIMULATOR_START_S = 60.0
@@ -49,19 +49,17 @@ def log_tail(path: Path, chars=LOG_TAIL_CHARS) -> str:
     return text[-chars:]
 
 
-def find_node(source_dir: Path, file_name: str):
+def find_node(submission, file_name: str):
     """(package name, path) of the first `file_name` in the submission's packages (in src/, scripts/, nodes/ or
-    anywhere in the package, sorted for the same answer every time), or None."""
-    for package_xml in sorted(Path(source_dir).rglob("package.xml")):
+    anywhere in the package, sorted for the same answer every time), or None. Package names are read as the intake
+    read them (submissions.read_package_name: the untrusted package.xml size-bounded first)."""
+    source_dir = Path(submission.source_dir)
+    for package_xml in sorted(source_dir.rglob("package.xml")):
         package_dir = package_xml.parent
         for candidate in sorted(package_dir.rglob(file_name)):
             if candidate.is_file() and "build" not in candidate.relative_to(package_dir).parts[:1]:
-                return package_name(package_xml), candidate
+                return read_package_name(submission.student_id, package_xml, source_dir), candidate
     return None
-
-
-def package_name(package_xml: Path) -> str:
-    return ElementTree.parse(str(package_xml)).getroot().findtext("name", "").strip()
 
 
 def ros_environment(base_env: Dict[str, str]) -> Dict[str, str]:
@@ -134,7 +132,7 @@ class SubmissionGrader:
             return
         nodes = []
         for file_name in self.suite.nodes:
-            found = find_node(submission.source_dir, file_name)
+            found = find_node(submission, file_name)
             if found is None:
                 nodes.append(NodeStart(file_name, None, "no file named {} in the submission".format(file_name)))
                 continue
