@@ -7,7 +7,8 @@ import os
 
 import pytest
 
-from lab_grader.checks import week4
+from lab_grader.checks import runner, service_checks
+from lab_grader.checks.fields import same_value
 from lab_grader.checks.motion import Observation
 from lab_grader.checks.verdicts import (
     ERROR,
@@ -103,7 +104,7 @@ def observe(commands, reply, error=None, front=None, reply_after=None):
 
 
 def judge(check_id, observation):
-    return week4.judge(CHECKS[check_id], observation, SUITE.settle_s)
+    return service_checks.judge(CHECKS[check_id], observation, SUITE.settle_s)
 
 
 def test_the_reference_move_passes():
@@ -143,8 +144,8 @@ def test_a_wrong_reply_fails_even_when_the_motion_is_right():
 
 
 def test_reply_kinds_are_strict():
-    assert not week4.same_value(1, True) and week4.same_value(True, True)
-    assert week4.same_value(0.4000000059604645, 0.4) and not week4.same_value("0.4", 0.4)
+    assert not same_value(1, True) and same_value(True, True)
+    assert same_value(0.4000000059604645, 0.4) and not same_value("0.4", 0.4)
 
 
 def test_refusals_pass_without_motion_and_fail_with_it():
@@ -241,7 +242,7 @@ class FakeContext:
 
 
 def test_a_run_turns_every_problem_into_an_error_verdict_and_scores_the_rest():
-    document = week4.run_suite(SUITE, FakeContext, log=lambda line: None)
+    document = runner.run_suite(SUITE, FakeContext, log=lambda line: None)
     verdicts = {check["id"]: check for check in document["checks"]}
     assert len(verdicts) == 17 and document["complete"] is True
     assert verdicts["move_true"]["verdict"] == PASS and verdicts["move_false"]["verdict"] == PASS
@@ -259,7 +260,7 @@ def test_a_run_turns_every_problem_into_an_error_verdict_and_scores_the_rest():
 
 
 def test_an_interrupted_run_still_lists_every_check():
-    document = week4.run_suite(SUITE, lambda: FakeContext(interrupt_at=2), log=lambda line: None)
+    document = runner.run_suite(SUITE, lambda: FakeContext(interrupt_at=2), log=lambda line: None)
     assert document["complete"] is False and len(document["checks"]) == 17
     assert document["checks"][0]["verdict"] == PASS
     assert all(check["reason"] == "not run: the runner was interrupted" for check in document["checks"][1:])
@@ -268,7 +269,7 @@ def test_an_interrupted_run_still_lists_every_check():
 def test_a_context_that_cannot_start_errors_every_check():
     def broken():
         raise CheckError("no /clock after 30 s")
-    document = week4.run_suite(SUITE, broken, log=lambda line: None)
+    document = runner.run_suite(SUITE, broken, log=lambda line: None)
     assert document["score"] == 0 and document["complete"] is True
     assert {check["verdict"] for check in document["checks"]} == {ERROR}
     assert document["checks"][0]["reason"] == "not run: CheckError: no /clock after 30 s"
@@ -282,13 +283,13 @@ def test_check_timeout_overrides_every_check():
             seen.append(timeout_s)
             return super().observe(service, request, timeout_s, settle_s, measure_front)
 
-    document = week4.run_suite(SUITE, Recording, check_timeout_s=4.0, log=lambda line: None)
+    document = runner.run_suite(SUITE, Recording, check_timeout_s=4.0, log=lambda line: None)
     assert seen and set(seen) == {4.0}
     assert document["checks"][0]["evidence"]["timeout_s"] == 4.0
 
 
 def test_main_writes_nothing_for_a_bad_suite(tmp_path, capsys):
     out = tmp_path / "r.json"
-    assert week4.main(["--suite", "week9", "--out", str(out)]) == 2
+    assert runner.main(["--suite", "week9", "--out", str(out)]) == 2
     assert "no suite named 'week9'" in capsys.readouterr().err
     assert not out.exists()

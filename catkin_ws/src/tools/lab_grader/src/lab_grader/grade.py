@@ -1,11 +1,11 @@
 """Grading one submission, from its source folder to its result: everything that happens inside its sandbox.
 
 The order is a marker's: copy the package into a fresh catkin workspace, `chmod +x` its Python files (as the course
-tells students to), build it with catkin_make on top of the lab, start roscore and tb3_sim (trusted, in the box's
-own loopback-only network), start the student's nodes the way the course says (`rosrun <package> <file>`), then
-run the suite's checks (`rosrun lab_grader run_checks`, trusted) and read their JSON. A build that fails, a node
-that is missing or dies, a check runner that overruns: each is recorded with its evidence (the tail of the log)
-and the submission gets the checks' verdicts as far as they got; the batch goes on.
+tells students to), build it with catkin_make on top of the lab, start roscore and, when the suite has a world,
+tb3_sim (trusted, in the box's own loopback-only network), start the student's nodes the way the course says
+(`rosrun <package> <file>`), then run the suite's checks (`rosrun lab_grader run_checks`, trusted) and read their
+JSON. A build that fails, a node that is missing or dies, a check runner that overruns: each is recorded with its
+evidence (the tail of the log) and the submission gets the checks' verdicts as far as they got; the batch goes on.
 
 Logs are written by the grader outside the student's workspace, under the submission's output folder.
 """
@@ -21,6 +21,8 @@ from lab_grader.submissions import read_package_name
 
 BUILD_TIMEOUT_S = 300.0
 SIMULATOR_START_S = 60.0
+SIMULATOR_READY_SERVICE = "/gazebo/reset_world"
+MASTER_READY_SERVICE = "/rosout/get_loggers"    # roscore's rosout node is up: the master answers
 NODE_SETTLE_S = 2.0
 """Wall seconds the student's nodes get to advertise their services before the checks look for them (the check
 runner waits longer for each service itself)."""
@@ -121,14 +123,17 @@ class SubmissionGrader:
             result["problems"].append("the package does not build (catkin_make)")
             return
         box.start_trusted(["roscore", "-p", str(ROS_PORT)], self.env, out_dir / "roscore.log")
-        box.start_trusted(["roslaunch", "--wait", "tb3_sim", "tb3_sim.launch", "gui:=false",
-                           "world:=" + self.suite.world, "real_time_factor:={:g}".format(self.real_time_factor)],
-                          self.env, out_dir / "simulator.log")
-        ready = box.run_trusted(["python3", "-m", "lab_grader.wait_service", "/gazebo/reset_world",
-                                 str(SIMULATOR_START_S)], self.env, out_dir / "simulator_wait.log",
-                                timeout_s=SIMULATOR_START_S + 10)
+        if self.suite.world is None:
+            ready_service, startup_log, what = MASTER_READY_SERVICE, out_dir / "roscore.log", "roscore"
+        else:
+            box.start_trusted(["roslaunch", "--wait", "tb3_sim", "tb3_sim.launch", "gui:=false",
+                               "world:=" + self.suite.world, "real_time_factor:={:g}".format(self.real_time_factor)],
+                              self.env, out_dir / "simulator.log")
+            ready_service, startup_log, what = SIMULATOR_READY_SERVICE, out_dir / "simulator.log", "the simulator"
+        ready = box.run_trusted(["python3", "-m", "lab_grader.wait_service", ready_service, str(SIMULATOR_START_S)],
+                                self.env, out_dir / "startup_wait.log", timeout_s=SIMULATOR_START_S + 10)
         if not ready.ok:
-            result["problems"].append("the simulator did not start: " + log_tail(out_dir / "simulator.log", 500))
+            result["problems"].append("{} did not start: {}".format(what, log_tail(startup_log, 500)))
             return
         nodes = []
         for file_name in self.suite.nodes:

@@ -9,8 +9,9 @@ The format (suites/week4.yaml is the worked example, with a comment on every key
 
     suite: week4                      # the suite's name (letters, digits, _ and -), written into the results
     title: Week 4 - ROS Services      # optional, free text
-    world: approach_arena             # the tb3_sim world the orchestrator starts (roslaunch tb3_sim tb3_sim.launch
-                                      #   world:=approach_arena)
+    world: approach_arena             # optional: the tb3_sim world the orchestrator starts (roslaunch tb3_sim
+                                      #   tb3_sim.launch world:=approach_arena); without it only a master runs, and
+                                      #   checks may not expect motion or a LiDAR distance
     real_time_factor: 1.0             # optional (1.0): the simulator speed the orchestrator grades at
     settle_s: 1.0                     # optional (1.0): sim s recorded after each reply; "left still" is judged then
     timeout_s: 30                     # optional (30): default reply timeout of a check, sim s
@@ -21,18 +22,23 @@ The format (suites/week4.yaml is the worked example, with a comment on every key
       - name: /move_service           # the name the course asks for (absolute)
         type: tuos_msgs/SetBool       # its type; another type with the same md5sum is accepted by type
         wait_s: 30                    # optional (30): wall s to wait for it to appear on the master
+    actions:                          # optional: actionlib servers the course asks for
+      - name: /my_action_server       # the action namespace the course asks for (absolute)
+        type: beginner_tutorials/counter  # the action type; another package's <Name>Action (the same name) is
+        wait_s: 30                    #   accepted by type
     nodes:                            # what the course has the student start (for the orchestrator): the file
       - move_server.py                #   names the course uses (rosrun <package> move_server.py)
     checks:
       - id: move_true                 # unique; lower case, digits and _
         title: ...                    # one line for the report
         weight: 16                    # points (>= 0) a pass is worth
-        service: /move_service        # one of services[].name
+        service: /move_service        # one of services[].name (or `action:`, see below)
         request: {request_signal: true}   # request fields (bool, int, float incl. .nan, str)
         timeout_s: 15                 # optional (suite's timeout_s): sim s to wait for the reply
         expect:                       # optional: nothing = any reply passes
           reply: {response_signal: true}          # reply fields that must be equal
           reply_matches: {response_message: "(?i)stop"}   # reply fields that must match a regex (re.search)
+          refused: true               # the call must fail (the server raised) instead of replying
           motion:                     # see lab_grader.checks.motion for the quantities
             forward_m: {value: 0.5, tolerance: 0.1}   # a range: {value, tolerance} or {min} / {max} / {min, max}
             lateral_max_m: 0.05       # |lateral_m| <= this
@@ -42,6 +48,20 @@ The format (suites/week4.yaml is the worked example, with a comment on every key
             excursion_max_m: 0.01     # never farther than this from the start ("no motion")
             still_at_end: true        # |v| < 0.01 m/s and |w| < 0.01 rad/s settle_s after the reply
           front_distance_m: {value: 0.4, tolerance: 0.05}  # closest LiDAR return within +-20 deg, once still
+      - id: count_three               # an action check: send a goal, maybe cancel it, judge how it ended
+        title: ...
+        weight: 30
+        action: /my_action_server     # one of actions[].name
+        goal: {num_counts: 3}         # goal fields
+        cancel_after_s: 2.5           # optional: cancel the goal this long (s) after sending it
+        timeout_s: 10                 # optional (suite's timeout_s): s to wait for the goal to end
+        expect:
+          state: SUCCEEDED            # the terminal state, or a list of accepted ones (actionlib GoalStatus names)
+          result: {result_message: "Counting complete!"}     # result fields that must be equal
+          result_matches: {result_message: "(?i)complete"}   # result fields that must match a regex
+          feedback: {counts_elapsed: [0, 1, 2]}  # every feedback message's field value, in order
+          duration_s: {value: 3, tolerance: 0.5}   # goal sent to goal ended, s
+          cancel_to_end_s: {max: 1.5}  # cancel sent to goal ended, s
 """
 import math
 import re
@@ -68,10 +88,14 @@ SERVICE_NAME = re.compile(r"^(/[A-Za-z][A-Za-z0-9_]*)+$")
 FILE_NAME = re.compile(r"^[A-Za-z0-9_.+-]+$")
 TYPE_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*/[A-Za-z][A-Za-z0-9_]*$")
 SUITE_KEYS = ("suite", "title", "world", "real_time_factor", "settle_s", "timeout_s", "still_timeout_s",
-              "by_type_grace_s", "services", "nodes", "checks")
+              "by_type_grace_s", "services", "actions", "nodes", "checks")
 SERVICE_KEYS = ("name", "type", "wait_s")
-CHECK_KEYS = ("id", "title", "weight", "service", "request", "timeout_s", "expect")
-EXPECT_KEYS = ("reply", "reply_matches", "motion", "front_distance_m")
+SERVICE_CHECK_KEYS = ("id", "title", "weight", "service", "request", "timeout_s", "expect")
+ACTION_CHECK_KEYS = ("id", "title", "weight", "action", "goal", "cancel_after_s", "timeout_s", "expect")
+EXPECT_KEYS = ("reply", "reply_matches", "refused", "motion", "front_distance_m")
+ACTION_EXPECT_KEYS = ("state", "result", "result_matches", "feedback", "duration_s", "cancel_to_end_s")
+GOAL_STATES = ("PENDING", "ACTIVE", "PREEMPTED", "SUCCEEDED", "ABORTED", "REJECTED", "PREEMPTING", "RECALLING",
+               "RECALLED", "LOST")
 RANGE_KEYS = ("min", "max", "value", "tolerance")
 
 
@@ -114,6 +138,16 @@ class Expectation(NamedTuple):
     reply_matches: Dict[str, "re.Pattern"]
     motion: Optional[MotionExpectation]
     front_distance_m: Optional[Range]
+    refused: bool = False
+
+
+class ActionExpectation(NamedTuple):
+    states: Tuple[str, ...]                 # accepted terminal states; empty = any
+    result: Dict[str, Any]
+    result_matches: Dict[str, "re.Pattern"]
+    feedback: Dict[str, Tuple[Any, ...]]    # field -> its values over the feedback messages, in order
+    duration_s: Optional[Range]
+    cancel_to_end_s: Optional[Range]
 
 
 class ServiceSpec(NamedTuple):
@@ -123,20 +157,26 @@ class ServiceSpec(NamedTuple):
 
 
 class CheckSpec(NamedTuple):
+    """A service check (`service`, `request`, an Expectation) or an action check (`action`, `goal`,
+    `cancel_after_s`, an ActionExpectation): the other kind's fields are None."""
+
     id: str
     title: str
     weight: float
-    service: str
-    request: Dict[str, Any]
+    service: Optional[str]
+    request: Optional[Dict[str, Any]]
     timeout_s: float
-    expect: Expectation
+    expect: Any
+    action: Optional[str] = None
+    goal: Optional[Dict[str, Any]] = None
+    cancel_after_s: Optional[float] = None
 
 
 class Suite(NamedTuple):
     name: str
     title: str
     path: Path
-    world: str
+    world: Optional[str]
     real_time_factor: float
     settle_s: float
     still_timeout_s: float
@@ -144,6 +184,7 @@ class Suite(NamedTuple):
     services: Tuple[ServiceSpec, ...]
     nodes: Tuple[str, ...]
     checks: Tuple[CheckSpec, ...]
+    actions: Tuple[ServiceSpec, ...] = ()
 
     @property
     def max_score(self):
@@ -299,20 +340,33 @@ def parse_suite(data, path) -> Suite:
     name = top.get("suite", lambda v, w: convert.text(v, w, SUITE_NAME, "a suite name (letters, digits, _, -)"),
                    required=True)
     title = top.get("title", convert.text, default=name)
-    world = top.get("world", convert.text, required=True)
+    world = top.get("world", convert.text)
     real_time_factor = top.get("real_time_factor", convert.positive, default=DEFAULT_REAL_TIME_FACTOR)
     settle_s = top.get("settle_s", convert.non_negative, default=DEFAULT_SETTLE_S)
     default_timeout_s = top.get("timeout_s", convert.positive, default=DEFAULT_TIMEOUT_S)
     still_timeout_s = top.get("still_timeout_s", convert.positive, default=DEFAULT_STILL_TIMEOUT_S)
     by_type_grace_s = top.get("by_type_grace_s", convert.non_negative, default=DEFAULT_BY_TYPE_GRACE_S)
-    services = top.get("services", lambda v, w: _services(convert, v, w), required=True)
-    names = [service.name for service in services]
+    services = top.get("services", lambda v, w: _services(convert, v, w, "a service type (package/Type)"),
+                       default=())
+    actions = top.get("actions", lambda v, w: _services(convert, v, w, "an action type (package/Name)"),
+                      default=())
+    if not services and not actions:
+        top.fail("services", "missing (a suite needs services or actions)")
     nodes = top.get("nodes", lambda v, w: _nodes(convert, v, w), default=())
-    checks = top.get("checks", lambda v, w: _checks(convert, v, w, names, default_timeout_s), required=True)
+    targets = _Targets([service.name for service in services], [action.name for action in actions], world)
+    checks = top.get("checks", lambda v, w: _checks(convert, v, w, targets, default_timeout_s), required=True)
     return Suite(name=name, title=title, path=path, world=world, real_time_factor=real_time_factor,
                  settle_s=float(settle_s),
                  still_timeout_s=still_timeout_s, by_type_grace_s=float(by_type_grace_s), services=services,
-                 nodes=nodes, checks=checks)
+                 nodes=nodes, checks=checks, actions=actions)
+
+
+class _Targets(NamedTuple):
+    """What checks may refer to: the suite's service and action names, and whether a world (a robot) runs."""
+
+    services: List[str]
+    actions: List[str]
+    world: Optional[str]
 
 
 def _items(convert, value, where):
@@ -321,17 +375,16 @@ def _items(convert, value, where):
     return [("{}[{}]".format(where, index), item) for index, item in enumerate(value)]
 
 
-def _services(convert, value, where) -> Tuple[ServiceSpec, ...]:
+def _services(convert, value, where, what) -> Tuple[ServiceSpec, ...]:
     result: List[ServiceSpec] = []
     for item_where, item in _items(convert, value, where):
         entry = _Mapping(convert.file_label, item_where, item, SERVICE_KEYS)
         name = entry.get("name", lambda v, w: convert.text(v, w, SERVICE_NAME, "an absolute ROS name (/a/b)"),
                          required=True)
-        srv_type = entry.get("type", lambda v, w: convert.text(v, w, TYPE_NAME, "a service type (package/Type)"),
-                             required=True)
+        srv_type = entry.get("type", lambda v, w: convert.text(v, w, TYPE_NAME, what), required=True)
         wait_s = entry.get("wait_s", convert.non_negative, default=DEFAULT_WAIT_S)
         if any(service.name == name for service in result):
-            convert.fail(entry.where("name"), "service {} is listed twice".format(name))
+            convert.fail(entry.where("name"), "{} is listed twice".format(name))
         result.append(ServiceSpec(name, srv_type, float(wait_s)))
     return tuple(result)
 
@@ -346,39 +399,88 @@ def _nodes(convert, value, where) -> Tuple[str, ...]:
     return tuple(result)
 
 
-def _service_ref(convert, value, where, service_names):
-    if value not in service_names:
-        convert.fail(where, "{} is not one of the suite's services ({})".format(_show(value), ", ".join(service_names)))
+def _reference(convert, value, where, names, what):
+    if value not in names:
+        convert.fail(where, "{} is not one of the suite's {} ({})".format(_show(value), what, ", ".join(names)
+                                                                          or "none"))
     return value
 
 
-def _checks(convert, value, where, service_names, default_timeout_s) -> Tuple[CheckSpec, ...]:
+def _checks(convert, value, where, targets, default_timeout_s) -> Tuple[CheckSpec, ...]:
     result: List[CheckSpec] = []
     for item_where, item in _items(convert, value, where):
-        entry = _Mapping(convert.file_label, item_where, item, CHECK_KEYS)
+        is_action = isinstance(item, dict) and "action" in item
+        entry = _Mapping(convert.file_label, item_where, item, ACTION_CHECK_KEYS if is_action else SERVICE_CHECK_KEYS)
         check_id = entry.get("id", lambda v, w: convert.text(v, w, CHECK_ID, "a check id (a-z, 0-9, _)"),
                              required=True)
         if any(check.id == check_id for check in result):
             convert.fail(entry.where("id"), "check id {} is used twice".format(check_id))
         title = entry.get("title", convert.text, required=True)
         weight = entry.get("weight", convert.non_negative, required=True)
-        service = entry.get("service", lambda v, w: _service_ref(convert, v, w, service_names), required=True)
+        timeout_s = float(entry.get("timeout_s", convert.positive, default=default_timeout_s))
+        if is_action:
+            action = entry.get("action", lambda v, w: _reference(convert, v, w, targets.actions, "actions"))
+            goal = entry.get("goal", lambda v, w: convert.fields(v, w, convert.scalar), default={})
+            cancel_after_s = entry.get("cancel_after_s", convert.positive)
+            expect = entry.get("expect", lambda v, w: _action_expectation(convert, v, w),
+                               default=_action_expectation(convert))
+            result.append(CheckSpec(check_id, title, weight, None, None, timeout_s, expect, action=action, goal=goal,
+                                    cancel_after_s=None if cancel_after_s is None else float(cancel_after_s)))
+            continue
+        service = entry.get("service", lambda v, w: _reference(convert, v, w, targets.services, "services"),
+                            required=True)
         request = entry.get("request", lambda v, w: convert.fields(v, w, convert.scalar), default={})
-        timeout_s = entry.get("timeout_s", convert.positive, default=default_timeout_s)
-        expect = entry.get("expect", lambda v, w: _expectation(convert, v, w), default=_expectation(convert))
-        result.append(CheckSpec(check_id, title, weight, service, request, float(timeout_s), expect))
+        expect = entry.get("expect", lambda v, w: _expectation(convert, v, w, targets.world),
+                           default=_expectation(convert))
+        result.append(CheckSpec(check_id, title, weight, service, request, timeout_s, expect))
     return tuple(result)
 
 
-def _expectation(convert, value=None, where="expect") -> Expectation:
+def _expectation(convert, value=None, where="expect", world=None) -> Expectation:
     if value is None:
         return Expectation({}, {}, None, None)
     mapping = _Mapping(convert.file_label, where, value, EXPECT_KEYS)
+    for robot_key in ("motion", "front_distance_m"):
+        if robot_key in value and world is None:
+            mapping.fail(mapping.where(robot_key), "needs a robot: the suite has no world")
     reply = mapping.get("reply", lambda v, w: convert.fields(v, w, convert.scalar), default={})
     matches = mapping.get("reply_matches", lambda v, w: convert.fields(v, w, convert.regex), default={})
+    refused = mapping.get("refused", convert.boolean, default=False)
+    if refused and (reply or matches):
+        mapping.fail(mapping.where("refused"), "a refused call has no reply to compare with reply/reply_matches")
     motion = mapping.get("motion", lambda v, w: _motion(convert, v, w))
     front = mapping.get("front_distance_m", convert.range)
-    return Expectation(reply, matches, motion, front)
+    return Expectation(reply, matches, motion, front, refused)
+
+
+def _action_expectation(convert, value=None, where="expect") -> ActionExpectation:
+    if value is None:
+        return ActionExpectation((), {}, {}, {}, None, None)
+    mapping = _Mapping(convert.file_label, where, value, ACTION_EXPECT_KEYS)
+    states = mapping.get("state", lambda v, w: _states(convert, v, w), default=())
+    result = mapping.get("result", lambda v, w: convert.fields(v, w, convert.scalar), default={})
+    matches = mapping.get("result_matches", lambda v, w: convert.fields(v, w, convert.regex), default={})
+    feedback = mapping.get("feedback", lambda v, w: convert.fields(v, w, lambda i, iw: _sequence(convert, i, iw)),
+                           default={})
+    return ActionExpectation(states, result, matches, feedback, mapping.get("duration_s", convert.range),
+                             mapping.get("cancel_to_end_s", convert.range))
+
+
+def _states(convert, value, where) -> Tuple[str, ...]:
+    names = [value] if isinstance(value, str) else value
+    if not isinstance(names, list) or not names:
+        convert.fail(where, "expected a goal state or a list of them, got {}".format(_show(value)))
+    for index, name in enumerate(names):
+        if name not in GOAL_STATES:
+            convert.fail(where if isinstance(value, str) else "{}[{}]".format(where, index),
+                         "{} is not a goal state ({})".format(_show(name), ", ".join(GOAL_STATES)))
+    return tuple(names)
+
+
+def _sequence(convert, value, where) -> Tuple[Any, ...]:
+    if not isinstance(value, list):
+        convert.fail(where, "expected a list of values, got {}".format(_show(value)))
+    return tuple(convert.scalar(item, "{}[{}]".format(where, index)) for index, item in enumerate(value))
 
 
 def _motion(convert, value, where) -> MotionExpectation:

@@ -17,6 +17,17 @@ the student's nodes. It
   interrupted from the client side; the daemon thread dies with the runner), and the observation says
   "no reply within N s of sim time".
 
+- finds the actionlib servers a suite expects (`find_actions`): by the course's namespace when its
+  <ns>/result topic carries the expected <Name>ActionResult type, else any namespace whose result topic has a type
+  of the same name in another package (com2009_msgs/counterActionResult for beginner_tutorials/counter). The
+  master knows topic types by name only, so the name is what is compared; the client's md5sum check on
+  connecting rejects a look-alike of another layout;
+- sends one graded goal (`observe_action`): records every feedback message, cancels the goal `cancel_after_s`
+  after sending it if asked, and waits at most `timeout_s` for it to end, all in ROS time.
+
+A suite without a world has no robot (`robot=False`): no /odom, /scan or /cmd_vel, nothing to reset, ROS time is
+wall time, and observations carry no samples.
+
 Sim-time waits are guarded in wall time: if the simulated clock does not advance for CLOCK_STALL_WALL_S wall
 seconds (the simulator died or is paused), the wait ends with a CheckError instead of hanging the runner.
 Topics and services are tb3_sim's single robot in the root namespace: /odom, /scan, /cmd_vel, /gazebo/reset_world.
@@ -27,18 +38,22 @@ import threading
 import time
 from typing import Dict, Sequence
 
+import actionlib
 import genpy
 import rosgraph
 import roslib.message
 import rospy
 import rosservice
+from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
 from std_srvs.srv import Empty
 
+from lab_grader.checks.action_checks import ActionObservation
 from lab_grader.checks.motion import Observation, Sample, front_distance, is_still
 from lab_grader.checks.verdicts import CheckError, FoundService, Interrupted
+from lab_grader.suite_file import GOAL_STATES
 
 NODE_NAME = "lab_grader_checks"
 ODOM_TOPIC = "/odom"
@@ -53,7 +68,10 @@ STILL_SAMPLES = 3              # consecutive still /odom samples (0.1 s at 30 Hz
 RESET_MARGIN_S = 0.1           # only /odom stamped this much sim time after the reset returned counts as "after":
                                # our /clock may lag the simulator's, and a pre-reset sample must never be the origin
 FRONT_SCAN_WAIT_SIM_S = 2.0    # a fresh /scan (5 Hz) must come within this much sim time
+ACTION_CONNECT_WALL_S = 5.0    # an action client must connect to the server's topics within this
+SERVER_ERROR_TEXT = "responded with an error"   # rospy's words for a server's error answer (its callback raised)
 POLL_WALL_S = 0.2              # service discovery polls the master this often
+STATE_NAMES = {getattr(GoalStatus, name): name for name in GOAL_STATES}   # 3 -> "SUCCEEDED"
 WAIT_SLICE_WALL_S = 0.01
 ODOM_QUEUE = 100               # no /odom sample is dropped while the runner is busy (30 Hz x the real-time factor)
 
@@ -69,6 +87,18 @@ def message_dict(message):
     if isinstance(message, bytes):
         return list(message)
     return message
+
+
+def action_message_class(type_name, part):
+    """The Python class <Name><part> ("Action", "Goal") of action type `type_name` (CheckError when it cannot be
+    imported)."""
+    try:
+        message_class = roslib.message.get_message_class(type_name + part)
+    except (ValueError, ImportError) as error:
+        raise CheckError("cannot load action type {}: {}".format(type_name, error)) from None
+    if message_class is None:
+        raise CheckError("cannot load action type {}: is its package built?".format(type_name))
+    return message_class
 
 
 def service_class(type_name):
@@ -93,6 +123,7 @@ class _Call:
     def __init__(self, proxy, request):
         self.reply = None
         self.error = None
+        self.server_error = False
         self.replied_s = None
         self.done = threading.Event()
         self._thread = threading.Thread(target=self._run, args=(proxy, request), daemon=True, name="graded-call")
@@ -103,6 +134,7 @@ class _Call:
             self.reply = proxy.call(request)
         except Exception as error:  # noqa: BLE001 - whatever the student's server does becomes the verdict's text
             self.error = "the call failed: {}: {}".format(type(error).__name__, error)
+            self.server_error = SERVER_ERROR_TEXT in str(error)
         finally:
             self.replied_s = rospy.get_rostime().to_sec()
             self.done.set()
@@ -111,19 +143,24 @@ class _Call:
 class GradingContext:
     """See the module docstring. Create it once per run (it calls rospy.init_node)."""
 
-    def __init__(self):
+    def __init__(self, robot=True):
         rospy.init_node(NODE_NAME, anonymous=True)
+        self.robot = robot
         self._changed = threading.Condition()
         self._recording = None            # a list while observe() records, else None
         self._latest = None               # the latest Sample
         self._rest_from_s = math.inf      # prepare(): count still samples stamped from this sim time on ...
         self._rest_count = 0              # ... consecutive ones, up to the latest
         self._scan = None                 # the latest LaserScan
+        self._action_clients = {}         # action name -> SimpleActionClient, made once
+        self._action_specs = []           # the specs find_actions looks for (to word "not found" notes)
+        self._sim_seen = (None, time.monotonic())   # (last sim time seen, wall time it changed)
+        if not robot:
+            return
         self._cmd_vel = rospy.Publisher(CMD_VEL_TOPIC, Twist, queue_size=1)
         self._reset = rospy.ServiceProxy(RESET_SERVICE, Empty)
         rospy.Subscriber(ODOM_TOPIC, Odometry, self._on_odom, queue_size=ODOM_QUEUE)
         rospy.Subscriber(SCAN_TOPIC, LaserScan, self._on_scan, queue_size=1)
-        self._sim_seen = (None, time.monotonic())   # (last sim time seen, wall time it changed)
 
     # ---- subscriptions ------------------------------------------------------------------------------------------
 
@@ -179,6 +216,8 @@ class GradingContext:
 
     def wait_until_ready(self):
         """Wait (wall, FIRST_CLOCK_WALL_S) for the first /clock and /odom and for tb3_sim to subscribe /cmd_vel."""
+        if not self.robot:
+            return
         deadline = time.monotonic() + FIRST_CLOCK_WALL_S
         while rospy.get_rostime().is_zero() or self._latest is None:
             self._check_running()
@@ -219,66 +258,114 @@ class GradingContext:
             cache[key] = (fields.get("type"), fields.get("md5sum"))
         return cache[key]
 
-    def find_services(self, specs: Sequence, by_type_grace_s: float) -> Dict[str, FoundService]:
-        """Find every spec (suite_file.ServiceSpec) as described in the module docstring; waits up to each spec's
-        wait_s wall seconds (all at once, from now). Returns {spec.name: FoundService}."""
-        expected_md5 = {spec.name: service_class(spec.type)._md5sum for spec in specs}
+    def _discover(self, specs: Sequence, by_type_grace_s: float, snapshot, match) -> Dict[str, FoundService]:
+        """The discovery loop shared by services and actions: poll `snapshot()` (the master's state) until every
+        spec is decided or its wait_s has passed. `match(spec, state)` gives (the type if the course's name
+        serves the expected type else None, why the course's name does not match or None, [(another name, its
+        type)] of the expected type). The course's name wins at once; another name is taken `by_type_grace_s`
+        after it appeared (the course's name may still come), or at the deadline."""
         started = time.monotonic()
         type_seen_at = {}
-        headers = {}        # (name, uri) -> (type, md5sum): a server's type does not change while it lives
         found = {}
         while True:
             now = time.monotonic()
-            try:
-                on_master = self._services_on_master()
-            except (rosgraph.MasterError, OSError) as error:
-                raise CheckError("cannot list the master's services: {}".format(error)) from None
-            own = rospy.get_name() + "/"
-
-            def header_of(name):
-                return self._service_header(name, on_master[name], headers)
-
+            state = snapshot()
             for spec in specs:
                 if spec.name in found:
                     continue
-                md5 = expected_md5[spec.name]
-                named_type, named_md5 = header_of(spec.name) if spec.name in on_master else (None, None)
-                if named_md5 == md5:
+                named_type, wrong_name, candidates = match(spec, state)
+                if named_type is not None:
                     found[spec.name] = FoundService(spec.name, spec.type, spec.name, "by name", named_type, None)
                     continue
-                wrong_name = None
-                if named_type is not None:
-                    wrong_name = "{} is served with type {}, whose md5sum differs from {}'s".format(
-                        spec.name, named_type, spec.type)
-                candidates = [name for name in on_master if name not in expected_md5 and not name.startswith(own)
-                              and header_of(name)[1] == md5]
                 deadline_passed = now - started >= spec.wait_s
                 if candidates:
                     type_seen_at.setdefault(spec.name, now)
                     if now - type_seen_at[spec.name] >= by_type_grace_s or deadline_passed:
-                        chosen = candidates[0]
+                        (chosen, chosen_type), others = candidates[0], candidates[1:]
                         notes = [wrong_name] if wrong_name else []
-                        if len(candidates) > 1:
-                            notes.append("other services of the same type: " + ", ".join(candidates[1:]))
-                        found[spec.name] = FoundService(spec.name, spec.type, chosen, "by type",
-                                                        header_of(chosen)[0], "; ".join(notes) or None)
+                        if others:
+                            notes.append("others of the same type: " + ", ".join(name for name, _ in others))
+                        found[spec.name] = FoundService(spec.name, spec.type, chosen, "by type", chosen_type,
+                                                        "; ".join(notes) or None)
                 elif deadline_passed:
-                    note = wrong_name or "no service named {} and none with the md5sum of {} after {:.0f} s".format(
-                        spec.name, spec.type, spec.wait_s)
-                    found[spec.name] = FoundService(spec.name, spec.type, None, None, named_type, note)
+                    note = wrong_name or "no {} named {} and none of type {} after {:.0f} s".format(
+                        "action" if spec in self._action_specs else "service", spec.name, spec.type, spec.wait_s)
+                    found[spec.name] = FoundService(spec.name, spec.type, None, None, None, note)
             if len(found) == len(specs):
                 return {spec.name: found[spec.name] for spec in specs}
             self._check_running()
             time.sleep(POLL_WALL_S)
 
+    def find_services(self, specs: Sequence, by_type_grace_s: float) -> Dict[str, FoundService]:
+        """Find every spec (suite_file.ServiceSpec) as described in the module docstring; waits up to each spec's
+        wait_s wall seconds (all at once, from now). Returns {spec.name: FoundService}."""
+        expected_md5 = {spec.name: service_class(spec.type)._md5sum for spec in specs}
+        headers = {}        # (name, uri) -> (type, md5sum): a server's type does not change while it lives
+        own = rospy.get_name() + "/"
+
+        def snapshot():
+            try:
+                return self._services_on_master()
+            except (rosgraph.MasterError, OSError) as error:
+                raise CheckError("cannot list the master's services: {}".format(error)) from None
+
+        def match(spec, on_master):
+            def header_of(name):
+                return self._service_header(name, on_master[name], headers)
+
+            md5 = expected_md5[spec.name]
+            named_type, named_md5 = header_of(spec.name) if spec.name in on_master else (None, None)
+            if named_md5 == md5:
+                return named_type, None, []
+            wrong_name = None
+            if named_type is not None:
+                wrong_name = "{} is served with type {}, whose md5sum differs from {}'s".format(
+                    spec.name, named_type, spec.type)
+            candidates = [(name, header_of(name)[0]) for name in on_master
+                          if name not in expected_md5 and not name.startswith(own) and header_of(name)[1] == md5]
+            return None, wrong_name, candidates
+
+        return self._discover(specs, by_type_grace_s, snapshot, match)
+
+    def find_actions(self, specs: Sequence, by_type_grace_s: float) -> Dict[str, FoundService]:
+        """Find every action spec (suite_file.ServiceSpec of `actions:`) by its <ns>/result topic, as described in
+        the module docstring. Returns {spec.name: FoundService}, `found` being the action namespace."""
+        self._action_specs = list(specs)
+        expected = {spec.name: spec.type.split("/")[1] for spec in specs}
+
+        def snapshot():
+            try:
+                topics = rosgraph.Master(rospy.get_name()).getPublishedTopics("")
+            except (rosgraph.MasterError, OSError) as error:
+                raise CheckError("cannot list the master's topics: {}".format(error)) from None
+            return {name[:-len("/result")]: topic_type[:-len("ActionResult")] for name, topic_type in topics
+                    if name.endswith("/result") and topic_type.endswith("ActionResult")}
+
+        def match(spec, results):
+            wanted = expected[spec.name]
+            named_type = results.get(spec.name)
+            if named_type is not None and named_type.split("/")[-1] == wanted:
+                return named_type, None, []
+            wrong_name = None
+            if named_type is not None:
+                wrong_name = "{} serves action type {}, not {}".format(spec.name, named_type, spec.type)
+            candidates = [(name, topic_type) for name, topic_type in sorted(results.items())
+                          if name not in expected and topic_type.split("/")[-1] == wanted]
+            return None, wrong_name, candidates
+
+        return self._discover(specs, by_type_grace_s, snapshot, match)
+
     # ---- the robot --------------------------------------------------------------------------------------------------
 
     def stop_robot(self):
-        self._cmd_vel.publish(Twist())
+        if self.robot:
+            self._cmd_vel.publish(Twist())
 
     def prepare(self, still_timeout_s):
         """Zero /cmd_vel, reset the world, and wait until the robot is at rest (CheckError if it is not)."""
         self._check_running()
+        if not self.robot:
+            return
         self.stop_robot()
         try:
             self._reset.wait_for_service(RESET_TIMEOUT_WALL_S)
@@ -335,15 +422,59 @@ class GradingContext:
                 error = call.error
             else:
                 reply, replied_s = message_dict(call.reply), call.replied_s
-                self._wait_sim(replied_s + settle_s)
+                if self.robot:
+                    self._wait_sim(replied_s + settle_s)
                 if measure_front:
                     front, front_measured = self._front_distance_after(self.now()), True
         finally:
             with self._changed:
                 samples, self._recording = tuple(self._recording), None
         return Observation(request=dict(request_fields), reply=reply, error=error, sent_s=sent_s,
-                           replied_s=replied_s, samples=samples, front_distance_m=front,
-                           front_measured=front_measured)
+                           replied_s=replied_s, samples=samples if self.robot else None, front_distance_m=front,
+                           front_measured=front_measured, server_error=answered and call.server_error)
+
+    # ---- one graded goal --------------------------------------------------------------------------------------------
+
+    def _action_client(self, action: FoundService):
+        client = self._action_clients.get(action.found)
+        if client is None:
+            client = actionlib.SimpleActionClient(action.found, action_message_class(action.expected_type, "Action"))
+            if not client.wait_for_server(rospy.Duration(ACTION_CONNECT_WALL_S)):
+                raise CheckError("the action client could not connect to {} within {:.0f} s".format(
+                    action.found, ACTION_CONNECT_WALL_S))
+            self._action_clients[action.found] = client
+        return client
+
+    def observe_action(self, action: FoundService, goal_fields, timeout_s, cancel_after_s=None):
+        """Send one goal with `goal_fields` to `action.found` and record how it went (an ActionObservation)."""
+        client = self._action_client(action)
+        try:
+            goal = action_message_class(action.expected_type, "Goal")(**goal_fields)
+        except (AttributeError, TypeError) as error:
+            raise CheckError("bad goal for {}: {}".format(action.expected_type, error)) from None
+        feedback, ended = [], threading.Event()
+        outcome = {}
+
+        def on_feedback(message):
+            feedback.append((self.now() - sent_s, message_dict(message)))
+
+        def on_done(state, result):
+            outcome.update(state=state, result=None if result is None else message_dict(result), ended_s=self.now())
+            ended.set()
+
+        sent_s = self.now()
+        client.send_goal(goal, done_cb=on_done, feedback_cb=on_feedback)
+        cancelled_s = None
+        if cancel_after_s is not None and not self._wait_sim(sent_s + cancel_after_s, ended.is_set):
+            cancelled_s = self.now()
+            client.cancel_goal()
+        if not self._wait_sim(sent_s + timeout_s, ended.is_set):
+            client.cancel_goal()
+            return ActionObservation(dict(goal_fields), None, "", None, tuple(feedback), sent_s, cancelled_s, None,
+                                     error="no result within {:g} s".format(timeout_s))
+        return ActionObservation(dict(goal_fields), STATE_NAMES.get(outcome["state"], str(outcome["state"])),
+                                 client.get_goal_status_text() or "", outcome["result"], tuple(feedback), sent_s,
+                                 cancelled_s, outcome["ended_s"])
 
     def shutdown(self):
         """Stop the robot and leave the graph (abandoned call threads die with the process)."""

@@ -77,17 +77,19 @@ class MotionSummary(NamedTuple):
 class Observation(NamedTuple):
     """The raw record of one graded call: the request sent, the reply (fields as a dict) or the error text, when
     (sim s) the request went out and the reply came back, every /odom sample from before the call until `settle_s`
-    after the reply, and the front LiDAR distance once still (m; None when nothing was in range, or when not
-    measured: see `front_measured`)."""
+    after the reply (None when the suite has no robot), and the front LiDAR distance once still (m; None when
+    nothing was in range, or when not measured: see `front_measured`). `server_error` is True when the error is
+    the server's own answer (its callback raised), not a timeout or a broken connection."""
 
     request: Dict[str, Any]
     reply: Optional[Dict[str, Any]]
     error: Optional[str]
     sent_s: float
     replied_s: Optional[float]
-    samples: Tuple[Sample, ...]
+    samples: Optional[Tuple[Sample, ...]]
     front_distance_m: Optional[float] = None
     front_measured: bool = False
+    server_error: bool = False
 
 
 class MotionError(ValueError):

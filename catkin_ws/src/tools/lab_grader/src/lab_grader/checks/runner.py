@@ -1,0 +1,151 @@
+"""Running a suite: find the services and actions, run every check in order, score, and write the results file.
+
+`run_suite(suite, make_context)` works against any context with GradingContext's methods (lab_grader.checks.context
+is the real one; the unit tests use a fake): service checks go to lab_grader.checks.service_checks, action checks
+to lab_grader.checks.action_checks. A check that cannot be run (a service not found, the runner interrupted, the
+context failing to start) gets an error verdict; every check of the suite is listed in the results.
+
+`main()` is `rosrun lab_grader run_checks --suite <name or path> --out <results.json> [--check-timeout S]`:
+the results file (lab_grader.checks.verdicts) is always written, atomically, also when checks errored or the
+runner was interrupted (then "complete": false); exit code 0 once it is written, 2 for a bad suite or arguments
+(nothing written), 1 if the file could not be written. Each check prints one line, `[3/17] pass  timed_fwd ...`,
+as it ends (the grader shows the latest in its progress line).
+"""
+import argparse
+import sys
+import time
+from pathlib import Path
+
+from lab_grader.checks import action_checks, service_checks
+from lab_grader.checks.verdicts import (
+    CheckResult,
+    Interrupted,
+    Verdict,
+    results_document,
+    summarize_verdicts,
+    write_results,
+)
+from lab_grader.suite_file import SuiteError, load_suite
+
+
+def not_run_evidence(check):
+    return (action_checks.evidence_of(check, None) if check.action is not None
+            else service_checks.evidence_of(check, None, None))
+
+
+def run_one(check, suite, context, found) -> Verdict:
+    if check.action is not None:
+        return action_checks.run_action_check(check, context, found.get(check.action))
+    return service_checks.run_check(check, suite, context, found.get(check.service))
+
+
+def run_suite(suite, make_context, check_timeout_s=None, log=print):
+    """Run every check of `suite` with a context from `make_context()`; returns the results document."""
+    wall_start = time.monotonic()
+    services = {spec.name: {"expected_type": spec.type, "found": None, "found_by": None, "found_type": None,
+                            "note": "not looked up"} for spec in suite.services + suite.actions}
+    found = {}
+    results = []
+    context = None
+    setup_error = None
+    interrupted = False
+    sim_start = None
+    try:
+        context = make_context()
+        context.wait_until_ready()
+        sim_start = context.now()
+        if suite.services:
+            found.update(context.find_services(suite.services, suite.by_type_grace_s))
+        if suite.actions:
+            found.update(context.find_actions(suite.actions, suite.by_type_grace_s))
+        services = {name: service.as_json() for name, service in found.items()}
+        for name, service in found.items():
+            log("{} {}: {}".format("action" if name in {a.name for a in suite.actions} else "service", name,
+                                   "{} ({}, {})".format(service.found, service.found_by, service.found_type)
+                                   if service.found else "not found: {}".format(service.note)))
+    except (Interrupted, KeyboardInterrupt):
+        interrupted = True
+        setup_error = "the runner was interrupted before the checks started"
+    except Exception as error:  # noqa: BLE001 - the results file is written whatever happens
+        setup_error = "{}: {}".format(type(error).__name__, error)
+        log("setup failed: " + setup_error)
+
+    for number, check in enumerate(suite.checks, start=1):
+        if interrupted:
+            verdict = Verdict.errored("not run: the runner was interrupted", not_run_evidence(check))
+        elif setup_error is not None:
+            verdict = Verdict.errored("not run: " + setup_error, not_run_evidence(check))
+        else:
+            if check_timeout_s is not None:
+                check = check._replace(timeout_s=check_timeout_s)
+            try:
+                verdict = run_one(check, suite, context, found)
+            except (Interrupted, KeyboardInterrupt):
+                interrupted = True
+                verdict = Verdict.errored("not run: the runner was interrupted", not_run_evidence(check))
+        result = CheckResult(check.id, check.title, check.weight, verdict)
+        results.append(result)
+        log("[{}/{}] {}".format(number, len(suite.checks), summarize_verdicts([result])[0]))
+
+    timing = {"wall_s": round(time.monotonic() - wall_start, 2)}
+    if context is not None and sim_start is not None:
+        try:
+            timing["sim_s"] = round(context.now() - sim_start, 2)
+            context.stop_robot()
+        except Exception:  # noqa: BLE001 - the graph may be gone; the results matter more
+            pass
+    return results_document(suite.name, services, results, complete=not interrupted, timing=timing)
+
+
+# ---- command line ---------------------------------------------------------------------------------------------------
+
+def positive_seconds(text):
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError("{!r} is not a number of seconds".format(text)) from None
+    if not value > 0 or value == float("inf"):
+        raise argparse.ArgumentTypeError("must be a positive number of seconds, got {!r}".format(text))
+    return value
+
+
+def parse_args(argv):
+    parser = argparse.ArgumentParser(
+        prog="run_checks", description="Run a grading suite's checks against the services and actions on this ROS "
+        "master (the student's nodes, and tb3_sim if the suite has a world, must be running) and write the results "
+        "as JSON.")
+    parser.add_argument("--suite", required=True, help="a suite name (suites/<name>.yaml) or a suite file path")
+    parser.add_argument("--out", required=True, type=Path, help="the results file to write (JSON)")
+    parser.add_argument("--check-timeout", type=positive_seconds, default=None, metavar="S",
+                        help="reply timeout of every check, seconds of sim time (default: each check's timeout_s)")
+    # ROS remappings (name:=value) are for rospy, not for us, as rospy.myargv would strip them.
+    return parser.parse_args([arg for arg in argv if ":=" not in arg])
+
+
+def main(argv=None):
+    args = parse_args(sys.argv[1:] if argv is None else argv)
+    try:
+        suite = load_suite(args.suite)
+    except SuiteError as error:
+        print("run_checks: {}".format(error), file=sys.stderr)
+        return 2
+
+    contexts = []
+
+    def make_context():
+        # Imported here so that the checks' logic above imports (and is unit-tested) without rospy.
+        from lab_grader.checks.context import GradingContext
+        contexts.append(GradingContext(robot=suite.world is not None))
+        return contexts[-1]
+
+    document = run_suite(suite, make_context, args.check_timeout, log=lambda line: print(line, flush=True))
+    try:
+        write_results(args.out, document)
+    except OSError as error:
+        print("run_checks: cannot write {}: {}".format(args.out, error), file=sys.stderr)
+        return 1
+    finally:
+        for context in contexts:
+            context.shutdown()
+    print("score {}/{} -> {}".format(document["score"], document["max_score"], args.out), flush=True)
+    return 0

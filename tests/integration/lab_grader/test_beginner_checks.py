@@ -1,0 +1,129 @@
+"""`rosrun lab_grader run_checks --suite beginner_tutorials` on a master with no simulator, as the grader runs it.
+
+First the lab's reference nodes (`rosrun beginner_tutorials add_two_int_server.py` and `counter_server.py`):
+every check passes, full score, the service and the action found by name. Then the reference nodes are replaced
+by student-like ones written here (never in the repository), under their own names: an add_two_int server that
+adds as floats (exact for small numbers, wrong at the int64 edges) and a counter server that counts from 1 and
+ignores cancels. Both are found by type; the int64 and feedback checks fail naming what happened.
+
+Marked realtime: the counter's one count per second and its preemption are judged in ROS time, which is wall time
+without a simulator.
+"""
+import json
+import subprocess
+import sys
+import textwrap
+
+import pytest
+
+from roslab import wait_for_service, wait_for_service_gone
+
+pytestmark = [pytest.mark.realtime, pytest.mark.slow]
+
+RUN_TIMEOUT_WALL_S = 120
+REFERENCE_NODES = ("/add_two_int_server", "/counter_action_server")
+
+FLOAT_ADD_SERVER = """
+import rospy
+from beginner_tutorials.srv import add_two_int, add_two_intResponse
+
+
+def add(request):
+    return add_two_intResponse(int(float(request.a) + float(request.b)))   # the mistake: floats lose int64 digits
+
+
+rospy.init_node("my_adder")
+rospy.Service("/my_adder/add", add_two_int, add)
+rospy.spin()
+"""
+
+STUBBORN_COUNTER_SERVER = """
+import actionlib
+import rospy
+from beginner_tutorials.msg import counterAction, counterFeedback, counterResult
+
+
+def execute(goal):
+    rate = rospy.Rate(1)
+    for count in range(1, goal.num_counts + 1):        # the mistakes: counts from 1, never looks at a cancel
+        server.publish_feedback(counterFeedback(counts_elapsed=count))
+        rate.sleep()
+    server.set_succeeded(counterResult(result_message="done"))
+
+
+rospy.init_node("my_counter")
+server = actionlib.SimpleActionServer("/counter", counterAction, execute_cb=execute, auto_start=False)
+server.start()
+rospy.spin()
+"""
+
+
+@pytest.fixture(scope="module")
+def reference(ros_master):
+    for node in ("add_two_int_server.py", "counter_server.py"):
+        ros_master.rosrun("beginner_tutorials", node)
+    wait_for_service(ros_master.uri, "/add_two_int", timeout_s=30)
+    return ros_master
+
+
+def run_checks(ros_master, out):
+    finished = subprocess.run(["rosrun", "lab_grader", "run_checks", "--suite", "beginner_tutorials", "--out",
+                               str(out)], env=ros_master.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                              text=True, timeout=RUN_TIMEOUT_WALL_S)
+    assert finished.returncode == 0, finished.stdout
+    results = json.loads(out.read_text())
+    return results, {check["id"]: check for check in results["checks"]}, finished.stdout
+
+
+def test_the_reference_nodes_pass_every_check(reference, tmp_path):
+    results, checks, output = run_checks(reference, tmp_path / "r.json")
+    failed = [(c["id"], c["verdict"], c["reason"]) for c in results["checks"] if c["verdict"] != "pass"]
+    assert failed == [], output
+    assert results["score"] == results["max_score"] == 100 and len(results["checks"]) == 10
+    for name in ("/add_two_int", "/my_action_server"):
+        assert results["services"][name]["found"] == name and results["services"][name]["found_by"] == "by name"
+    assert checks["add_int64_max"]["evidence"]["reply"] == {"sum": 9223372036854775807}
+    assert "int64 range" in checks["add_overflow_refused"]["evidence"]["server_error"]
+    count = checks["count_three"]["evidence"]
+    assert [fields["counts_elapsed"] for _, fields in count["feedback"]] == [0, 1, 2]
+    assert count["state"] == "SUCCEEDED" and count["result"] == {"result_message": "Counting complete!"}
+    assert count["ended_after_s"] == pytest.approx(3.0, abs=0.5)
+    cancelled = checks["count_cancelled"]["evidence"]
+    assert cancelled["state"] == "PREEMPTED" and cancelled["cancelled_after_s"] == pytest.approx(2.5, abs=0.2)
+    assert "after 3 of 10 counts" in cancelled["result"]["result_message"]
+    assert checks["count_zero_ends"]["evidence"]["state"] == "ABORTED"
+
+
+@pytest.fixture
+def student_nodes(reference, tmp_path):
+    subprocess.run(["rosnode", "kill", *REFERENCE_NODES], env=reference.env, check=True, timeout=30,
+                   stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT)
+    wait_for_service_gone(reference.uri, "/add_two_int", timeout_s=30)
+    processes = []
+    for label, code in (("my_adder", FLOAT_ADD_SERVER), ("my_counter", STUBBORN_COUNTER_SERVER)):
+        script = tmp_path / (label + ".py")
+        script.write_text(textwrap.dedent(code))
+        processes.append(reference.start([sys.executable, str(script)], label))
+    try:
+        wait_for_service(reference.uri, "/my_adder/add", timeout_s=30)
+        yield reference
+    finally:
+        for process in processes:
+            process.stop()
+
+
+def test_float_sums_and_a_counter_that_ignores_cancels_fail_with_reasons(student_nodes, tmp_path):
+    results, checks, output = run_checks(student_nodes, tmp_path / "r.json")
+    assert results["services"]["/add_two_int"]["found"] == "/my_adder/add"
+    assert results["services"]["/add_two_int"]["found_by"] == "by type"
+    assert results["services"]["/my_action_server"]["found"] == "/counter"
+    assert results["services"]["/my_action_server"]["found_by"] == "by type"
+    verdicts = {check_id: check["verdict"] for check_id, check in checks.items()}
+    assert verdicts == {"add_small": "pass", "add_negative": "pass", "add_int64_max": "error",
+                        "add_int64_min": "pass", "add_int64_extremes": "fail", "add_overflow_refused": "pass",
+                        "add_after_overflow": "pass", "count_three": "fail", "count_cancelled": "fail",
+                        "count_zero_ends": "pass"}, output
+    assert "expected sum -1, it replied 0" in checks["add_int64_extremes"]["reason"]
+    assert "expected feedback counts_elapsed [0, 1, 2], it sent [1, 2, 3]" in checks["count_three"]["reason"]
+    assert "expected the goal to end PREEMPTED, it ended SUCCEEDED" in checks["count_cancelled"]["reason"]
+    assert results["score"] == 10 + 5 + 5 + 5 + 10 + 5
