@@ -4,12 +4,16 @@ First the lab's reference nodes (`rosrun beginner_tutorials add_two_int_server.p
 every check passes, full score, the service and the action found by name. Then the reference nodes are replaced
 by student-like ones written here (never in the repository), under their own names: an add_two_int server that
 adds as floats (exact for small numbers, wrong at the int64 edges) and a counter server that counts from 1 and
-ignores cancels. Both are found by type; the int64 and feedback checks fail naming what happened.
+ignores cancels. Both are found by type; the int64 and feedback checks fail naming what happened. Last, the
+whole grader (`rosrun lab_grader grade --suite beginner_tutorials`) on a copy of the lab's own package, built and
+run in its sandbox with only roscore: full marks.
 
 Marked realtime: the counter's one count per second and its preemption are judged in ROS time, which is wall time
 without a simulator.
 """
 import json
+import os
+import shutil
 import subprocess
 import sys
 import textwrap
@@ -17,6 +21,8 @@ import textwrap
 import pytest
 
 from roslab import wait_for_service, wait_for_service_gone
+
+from .conftest import LAB_ROOT
 
 pytestmark = [pytest.mark.realtime, pytest.mark.slow]
 
@@ -127,3 +133,16 @@ def test_float_sums_and_a_counter_that_ignores_cancels_fail_with_reasons(student
     assert "expected feedback counts_elapsed [0, 1, 2], it sent [1, 2, 3]" in checks["count_three"]["reason"]
     assert "expected the goal to end PREEMPTED, it ended SUCCEEDED" in checks["count_cancelled"]["reason"]
     assert results["score"] == 10 + 5 + 5 + 5 + 10 + 5
+
+
+def test_the_labs_own_package_scores_full_marks_in_the_grader(ros_master, tmp_path):
+    student = tmp_path / "class" / "lab_reference"
+    shutil.copytree(LAB_ROOT / "catkin_ws/src/exercises/beginner_tutorials", student / "beginner_tutorials",
+                    ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
+    run = subprocess.run(["rosrun", "lab_grader", "grade", str(tmp_path / "class"), "--suite", "beginner_tutorials",
+                          "--out", str(tmp_path / "out"), "-j", "1"], env=dict(os.environ), capture_output=True,
+                         text=True, timeout=300)
+    assert run.returncode == 0, run.stdout + run.stderr
+    result = json.loads((tmp_path / "out" / "lab_reference" / "result.json").read_text())
+    assert result["score"] == result["max_score"] == 100, json.dumps(result, indent=1)[:3000]
+    assert result["problems"] == [] and not (tmp_path / "out" / "lab_reference" / "simulator.log").exists()
