@@ -1,5 +1,6 @@
 """Grading a class: the submissions of this shard, `jobs` at a time (one sandbox slot per worker thread), with a
-progress line per finished submission, then the class CSV and summary. No ROS import.
+progress line per finished submission and, every STATUS_EVERY_S while work goes on, a status line of what each
+worker is doing (building, starting, which check), then the class CSV and summary. No ROS import.
 
 Sharding is for existing job runners (Slurm arrays, Kubernetes Indexed Jobs, a CI matrix): shard K of N grades
 the submissions whose position in the sorted list is K-1 modulo N, into its own output folder; `merge` then builds
@@ -10,9 +11,28 @@ import sys
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
-from typing import List, NamedTuple, Sequence
+from typing import Dict, List, NamedTuple, Optional, Sequence
 
 SHARD_PATTERN = re.compile(r"^(\d+)/(\d+)$")
+STATUS_EVERY_S = 15.0
+CHECK_LINE = re.compile(r"^\[(\d+)/(\d+)\] (\w+)\s+(\S+)", re.MULTILINE)   # run_checks: "[3/17] pass  timed_fwd ..."
+CHECK_LOG_TAIL_BYTES = 4096
+
+
+def latest_check(log_path) -> Optional[str]:
+    """'check 3/17 done (timed_fwd: pass)' from the end of a run_checks log, or None before the first check."""
+    try:
+        with open(log_path, "rb") as log:
+            log.seek(0, 2)
+            log.seek(max(0, log.tell() - CHECK_LOG_TAIL_BYTES))
+            tail = log.read().decode("utf-8", "replace")
+    except OSError:
+        return None
+    matches = CHECK_LINE.findall(tail)
+    if not matches:
+        return None
+    number, total, verdict, check_id = matches[-1]
+    return "check {}/{} done ({}: {})".format(number, total, check_id, verdict)
 
 
 class Shard(NamedTuple):
@@ -40,30 +60,54 @@ def format_duration(seconds: float) -> str:
 
 
 class Progress:
-    """One line per finished submission: done/total, the student's score, and the time left at the pace so far."""
+    """One line per finished submission: done/total, the student's score, and the time left at the pace so far;
+    and on request (`status`) one line of what each worker is doing now, from the stages the graders report
+    (`stage(student, what, checks_log=None)`: with a check log, the latest check finished is read from it)."""
 
     def __init__(self, total: int, out=sys.stdout):
         self.total, self.done, self.out = total, 0, out
         self.started = time.monotonic()
         self._lock = threading.Lock()
+        self._stages: Dict[str, tuple] = {}     # student -> (what, checks log or None)
+
+    def stage(self, student: str, what: str, checks_log=None) -> None:
+        with self._lock:
+            self._stages[student] = (what, checks_log)
+
+    def eta(self) -> str:
+        if not self.done:
+            return "ETA unknown"
+        elapsed = time.monotonic() - self.started
+        return "ETA " + format_duration(elapsed / self.done * (self.total - self.done))
+
+    def status(self) -> None:
+        """One line: done/total, each active student's stage (and latest check), the ETA."""
+        with self._lock:
+            stages = sorted(self._stages.items())
+            parts = []
+            for student, (what, checks_log) in stages:
+                check = latest_check(checks_log) if checks_log is not None else None
+                parts.append("{}: {}{}".format(student, what, ", " + check if check else ""))
+            if parts:
+                self.out.write("[{}/{} done] {} ({})\n".format(self.done, self.total, "; ".join(parts), self.eta()))
+                self.out.flush()
 
     def finished(self, result: dict) -> None:
         with self._lock:
+            self._stages.pop(result["student"], None)
             self.done += 1
-            elapsed = time.monotonic() - self.started
-            left = elapsed / self.done * (self.total - self.done)
             passed = sum(check["verdict"] == "pass" for check in result["checks"])
             problem = "; " + result["problems"][0][:80] if result["problems"] else ""
-            self.out.write("[{}/{}] {}: {:g}/{:g} points, {}/{} checks passed, {}{} (ETA {})\n".format(
+            self.out.write("[{}/{}] {}: {:g}/{:g} points, {}/{} checks passed, {}{} ({})\n".format(
                 self.done, self.total, result["student"], result["score"], result["max_score"], passed,
-                len(result["checks"]), format_duration(result.get("duration_s", 0)), problem,
-                format_duration(left)))
+                len(result["checks"]), format_duration(result.get("duration_s", 0)), problem, self.eta()))
             self.out.flush()
 
 
 def grade_all(submissions, make_grader, out_root, jobs: int, progress: Progress) -> List[dict]:
     """Grade every submission, `jobs` at a time: `make_grader(slot)` gives a grader for one worker's slot (slots
-    0..jobs-1), and each worker grades into out_root/<student>/."""
+    0..jobs-1), and each worker grades into out_root/<student>/, reporting its stages to `progress`; a status
+    line is printed every STATUS_EVERY_S until all are done."""
     slots = list(range(jobs))
     slot_lock = threading.Lock()
     local = threading.local()
@@ -72,9 +116,22 @@ def grade_all(submissions, make_grader, out_root, jobs: int, progress: Progress)
         if not hasattr(local, "grader"):
             with slot_lock:
                 local.grader = make_grader(slots.pop(0))
-        result = local.grader.grade(submission, out_root / submission.student_id)
+        result = local.grader.grade(submission, out_root / submission.student_id,
+                                    on_stage=lambda what, log=None: progress.stage(submission.student_id, what, log))
         progress.finished(result)
         return result
 
-    with ThreadPoolExecutor(max_workers=jobs, thread_name_prefix="grader") as pool:
-        return list(pool.map(grade_one, submissions))
+    all_done = threading.Event()
+
+    def report_status():
+        while not all_done.wait(STATUS_EVERY_S):
+            progress.status()
+
+    reporter = threading.Thread(target=report_status, daemon=True, name="grade-status")
+    reporter.start()
+    try:
+        with ThreadPoolExecutor(max_workers=jobs, thread_name_prefix="grader") as pool:
+            return list(pool.map(grade_one, submissions))
+    finally:
+        all_done.set()
+        reporter.join()

@@ -89,9 +89,9 @@ class SubmissionGrader:
         self.real_time_factor = suite.real_time_factor if real_time_factor is None else real_time_factor
         self.limits = limits
 
-    def grade(self, submission, out_dir: Path) -> dict:
+    def grade(self, submission, out_dir: Path, on_stage=lambda what, checks_log=None: None) -> dict:
         """Grade `submission` (lab_grader.submissions.Submission); writes out_dir/result.json and the logs, and
-        returns the result."""
+        returns the result. `on_stage(what, checks_log=None)` hears each stage as it starts (for a progress line)."""
         out_dir = Path(out_dir)
         out_dir.mkdir(parents=True, exist_ok=True)
         started = time.monotonic()
@@ -100,7 +100,7 @@ class SubmissionGrader:
                   "services": {}, "score": 0.0, "max_score": self.suite.max_score, "problems": []}
         try:
             with SubmissionSandbox(self.work_root, self.slot, self.lab_root, self.limits) as box:
-                self._grade_in(box, submission, out_dir, result)
+                self._grade_in(box, submission, out_dir, result, on_stage)
         except Exception as error:   # noqa: BLE001 - the batch goes on; the reason is in the result
             result["problems"].append("grading stopped: {}".format(error))
         result["duration_s"] = round(time.monotonic() - started, 1)
@@ -111,17 +111,20 @@ class SubmissionGrader:
         write_json(out_dir / RESULT_FILE, result)
         return result
 
-    def _grade_in(self, box, submission, out_dir, result):
+    def _grade_in(self, box, submission, out_dir, result, on_stage):
+        on_stage("copying")
         box.copy_into_workspace(submission.source_dir, "src")
         env = box.student_env(self.env)
         box.run_student(["find", "src", "-name", "*.py", "-exec", "chmod", "+x", "{}", "+"], env,
                         out_dir / "chmod.log", timeout_s=30)
+        on_stage("building")
         build = box.run_student(["catkin_make"], env, out_dir / "build.log", timeout_s=BUILD_TIMEOUT_S)
         result["build"] = {"ok": build.ok, "stopped": build.stop_reason, "log_tail": None if build.ok
                            else log_tail(out_dir / "build.log")}
         if not build.ok:
             result["problems"].append("the package does not build (catkin_make)")
             return
+        on_stage("starting roscore" if self.suite.world is None else "starting the simulator")
         box.start_trusted(["roscore", "-p", str(ROS_PORT)], self.env, out_dir / "roscore.log")
         if self.suite.world is None:
             ready_service, startup_log, what = MASTER_READY_SERVICE, out_dir / "roscore.log", "roscore"
@@ -135,6 +138,7 @@ class SubmissionGrader:
         if not ready.ok:
             result["problems"].append("{} did not start: {}".format(what, log_tail(startup_log, 500)))
             return
+        on_stage("starting nodes")
         nodes = []
         for file_name in self.suite.nodes:
             found = find_node(submission, file_name)
@@ -147,6 +151,7 @@ class SubmissionGrader:
             nodes.append((NodeStart(file_name, package, None), process, log))
         time.sleep(NODE_SETTLE_S)
         checks_log = out_dir / "checks.log"
+        on_stage("checks", checks_log)
         run = box.run_trusted(["rosrun", "lab_grader", "run_checks", "--suite", str(self.suite.path),
                                "--out", str(out_dir / CHECKS_FILE)], self.env, checks_log, timeout_s=CHECKS_TIMEOUT_S)
         for entry in nodes:
