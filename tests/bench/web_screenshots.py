@@ -27,7 +27,7 @@ from roslab.browser import HeadlessBrowser  # noqa: E402
 REPO_ROOT = Path(__file__).resolve().parents[2]
 WINDOW_SIZE = (1400, 1000)
 """Browser window to start with: wide enough for the two columns side by side. Before each screenshot the window
-is made as tall as the page (see fit_page), so the echo pane and the graph below the fold show too."""
+is made as tall as the page (HeadlessBrowser.save_full_page), so the echo pane and the graph below the fold show too."""
 DEMO = ("week4_services", "week4_demo.launch", "gui:=false", "camera_width:=320", "camera_height:=240")
 BOX_AT = (-0.5, 0.8)
 """World point (m) where the box is dropped by a click on the page's floor."""
@@ -73,21 +73,8 @@ def select_topic(browser, topic, expected_text):
                    "wrap.scrollLeft = 0; wrap.scrollTop = row.offsetTop - wrap.clientHeight / 2;", selector)
 
 
-def fit_page(browser):
-    """Make the window as tall as the page (same width), scrolled to the top, so one screenshot shows it all."""
-    for _ in range(3):
-        inner, full = browser.script("return [window.innerHeight, document.documentElement.scrollHeight];")
-        if full <= inner:
-            break
-        size = browser.driver.get_window_size()
-        browser.driver.set_window_size(size["width"], size["height"] + full - inner)
-    browser.script("window.scrollTo(0, 0);")
-    time.sleep(0.5)   # a frame or two drawn at the new size
-
-
 def screenshot(browser, path):
-    fit_page(browser)
-    browser.save_screenshot(path)
+    browser.save_full_page(path)
     say("wrote {}".format(path))
     errors = browser.console_errors()
     if errors:

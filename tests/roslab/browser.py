@@ -1,6 +1,7 @@
 """A real headless browser for page tests: Debian's Chromium driven by Selenium through chromedriver, with its
 console log, canvas pixels and a guaranteed end (every Chromium process it started is gone after `quit`)."""
 import os
+import time
 
 import cv2
 import numpy
@@ -51,6 +52,18 @@ class HeadlessBrowser:
 
     def save_screenshot(self, path):
         self.driver.save_screenshot(str(path))
+
+    def save_full_page(self, path):
+        """A screenshot of the whole page: the window made as tall as the page (same width), scrolled to the top."""
+        for _ in range(3):
+            inner, full = self.script("return [window.innerHeight, document.documentElement.scrollHeight];")
+            if full <= inner:
+                break
+            size = self.driver.get_window_size()
+            self.driver.set_window_size(size["width"], size["height"] + full - inner)
+        self.script("window.scrollTo(0, 0);")
+        time.sleep(0.5)   # a frame or two drawn at the new size
+        self.save_screenshot(path)
 
     def quit(self):
         self._processes |= self._started()
