@@ -1,12 +1,11 @@
-"""`rosrun lab_grader run_checks --suite beginner_tutorials` on a master with no simulator, as the grader runs it.
+"""The beginner_tutorials suite (add_two_int and the counter action; no simulator, only roscore).
 
-First the lab's reference nodes (`rosrun beginner_tutorials add_two_int_server.py` and `counter_server.py`):
-every check passes, full score, the service and the action found by name. Then the reference nodes are replaced
-by student-like ones written here (never in the repository), under their own names: an add_two_int server that
-adds as floats (exact for small numbers, wrong at the int64 edges) and a counter server that counts from 1 and
-ignores cancels. Both are found by type; the int64 and feedback checks fail naming what happened. Last, the
-whole grader (`rosrun lab_grader grade --suite beginner_tutorials`) on a copy of the lab's own package, built and
-run in its sandbox with only roscore: full marks.
+First the whole grader (`rosrun lab_grader grade --suite beginner_tutorials`) on a copy of the lab's own package,
+built and run in its sandbox: full marks, the service and the action found by name, with the evidence of each
+check. Then `rosrun lab_grader run_checks`, as the grader runs it, against student-like nodes written here (never
+in the repository) under their own names: an add_two_int server that adds as floats (exact for small numbers,
+wrong at the int64 edges) and a counter server that counts from 1 and ignores cancels. Both are found by type; the
+int64 and feedback checks fail naming what happened.
 
 Marked realtime: the counter's one count per second and its preemption are judged in ROS time, which is wall time
 without a simulator.
@@ -20,14 +19,13 @@ import textwrap
 
 import pytest
 
-from roslab import wait_for_service, wait_for_service_gone
+from roslab import wait_for_service
 
 from .conftest import LAB_ROOT
 
 pytestmark = [pytest.mark.realtime, pytest.mark.slow]
 
 RUN_TIMEOUT_WALL_S = 120
-REFERENCE_NODES = ("/add_two_int_server", "/counter_action_server")
 
 FLOAT_ADD_SERVER = """
 import rospy
@@ -64,14 +62,6 @@ rospy.spin()
 """
 
 
-@pytest.fixture(scope="module")
-def reference(ros_master):
-    for node in ("add_two_int_server.py", "counter_server.py"):
-        ros_master.rosrun("beginner_tutorials", node)
-    wait_for_service(ros_master.uri, "/add_two_int", timeout_s=30)
-    return ros_master
-
-
 def run_checks(ros_master, out):
     finished = subprocess.run(["rosrun", "lab_grader", "run_checks", "--suite", "beginner_tutorials", "--out",
                                str(out)], env=ros_master.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
@@ -81,38 +71,16 @@ def run_checks(ros_master, out):
     return results, {check["id"]: check for check in results["checks"]}, finished.stdout
 
 
-def test_the_reference_nodes_pass_every_check(reference, tmp_path):
-    results, checks, output = run_checks(reference, tmp_path / "r.json")
-    failed = [(c["id"], c["verdict"], c["reason"]) for c in results["checks"] if c["verdict"] != "pass"]
-    assert failed == [], output
-    assert results["score"] == results["max_score"] == 100 and len(results["checks"]) == 10
-    for name in ("/add_two_int", "/my_action_server"):
-        assert results["services"][name]["found"] == name and results["services"][name]["found_by"] == "by name"
-    assert checks["add_int64_max"]["evidence"]["reply"] == {"sum": 9223372036854775807}
-    assert "int64 range" in checks["add_overflow_refused"]["evidence"]["server_error"]
-    count = checks["count_three"]["evidence"]
-    assert [fields["counts_elapsed"] for _, fields in count["feedback"]] == [0, 1, 2]
-    assert count["state"] == "SUCCEEDED" and count["result"] == {"result_message": "Counting complete!"}
-    assert count["ended_after_s"] == pytest.approx(3.0, abs=0.5)
-    cancelled = checks["count_cancelled"]["evidence"]
-    assert cancelled["state"] == "PREEMPTED" and cancelled["cancelled_after_s"] == pytest.approx(2.5, abs=0.2)
-    assert "after 3 of 10 counts" in cancelled["result"]["result_message"]
-    assert checks["count_zero_ends"]["evidence"]["state"] == "ABORTED"
-
-
 @pytest.fixture
-def student_nodes(reference, tmp_path):
-    subprocess.run(["rosnode", "kill", *REFERENCE_NODES], env=reference.env, check=True, timeout=30,
-                   stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT)
-    wait_for_service_gone(reference.uri, "/add_two_int", timeout_s=30)
+def student_nodes(ros_master, tmp_path):
     processes = []
     for label, code in (("my_adder", FLOAT_ADD_SERVER), ("my_counter", STUBBORN_COUNTER_SERVER)):
         script = tmp_path / (label + ".py")
         script.write_text(textwrap.dedent(code))
-        processes.append(reference.start([sys.executable, str(script)], label))
+        processes.append(ros_master.start([sys.executable, str(script)], label))
     try:
-        wait_for_service(reference.uri, "/my_adder/add", timeout_s=30)
-        yield reference
+        wait_for_service(ros_master.uri, "/my_adder/add", timeout_s=30)
+        yield ros_master
     finally:
         for process in processes:
             process.stop()
@@ -135,7 +103,7 @@ def test_float_sums_and_a_counter_that_ignores_cancels_fail_with_reasons(student
     assert results["score"] == 10 + 5 + 5 + 5 + 10 + 5
 
 
-def test_the_labs_own_package_scores_full_marks_in_the_grader(ros_master, tmp_path):
+def test_the_labs_own_package_scores_full_marks_in_the_grader(tmp_path):
     student = tmp_path / "class" / "lab_reference"
     shutil.copytree(LAB_ROOT / "catkin_ws/src/exercises/beginner_tutorials", student / "beginner_tutorials",
                     ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
@@ -143,6 +111,21 @@ def test_the_labs_own_package_scores_full_marks_in_the_grader(ros_master, tmp_pa
                           "--out", str(tmp_path / "out"), "-j", "1"], env=dict(os.environ), capture_output=True,
                          text=True, timeout=300)
     assert run.returncode == 0, run.stdout + run.stderr
-    result = json.loads((tmp_path / "out" / "lab_reference" / "result.json").read_text())
-    assert result["score"] == result["max_score"] == 100, json.dumps(result, indent=1)[:3000]
-    assert result["problems"] == [] and not (tmp_path / "out" / "lab_reference" / "simulator.log").exists()
+    results = json.loads((tmp_path / "out" / "lab_reference" / "result.json").read_text())
+    failed = [(c["id"], c["verdict"], c["reason"]) for c in results["checks"] if c["verdict"] != "pass"]
+    assert failed == [] and results["problems"] == [], json.dumps(results, indent=1)[:3000]
+    assert results["score"] == results["max_score"] == 100 and len(results["checks"]) == 10
+    assert not (tmp_path / "out" / "lab_reference" / "simulator.log").exists()
+    for name in ("/add_two_int", "/my_action_server"):
+        assert results["services"][name]["found"] == name and results["services"][name]["found_by"] == "by name"
+    checks = {check["id"]: check for check in results["checks"]}
+    assert checks["add_int64_max"]["evidence"]["reply"] == {"sum": 9223372036854775807}
+    assert "int64 range" in checks["add_overflow_refused"]["evidence"]["server_error"]
+    count = checks["count_three"]["evidence"]
+    assert [fields["counts_elapsed"] for _, fields in count["feedback"]] == [0, 1, 2]
+    assert count["state"] == "SUCCEEDED" and count["result"] == {"result_message": "Counting complete!"}
+    assert count["ended_after_s"] == pytest.approx(3.0, abs=0.5)
+    cancelled = checks["count_cancelled"]["evidence"]
+    assert cancelled["state"] == "PREEMPTED" and cancelled["cancelled_after_s"] == pytest.approx(2.5, abs=0.2)
+    assert "after 3 of 10 counts" in cancelled["result"]["result_message"]
+    assert checks["count_zero_ends"]["evidence"]["state"] == "ABORTED"
