@@ -1,6 +1,9 @@
 """Shared pytest fixtures. Run the suite through scripts/test, which sets up and sources scripts/env.sh."""
+import json
 import os
+import resource
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -59,3 +62,25 @@ def monkeypatch_module():
 def probe(ros_master):
     """A probe node (see roslab/probe_node.py) on the module's master."""
     return ros_master.probe()
+
+
+def _cpu_seconds():
+    """CPU seconds (user + system) of this process and of every child it has reaped (roscore, nodes, and their
+    own reaped children)."""
+    own, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _module_cost(request):
+    """With LAB_TEST_COST_LOG set (scripts/test sets it), append one JSON line per test module to that file: its
+    wall seconds and CPU seconds, including the processes it started and ended (tests/bench/suite_cost.py sums
+    them up). Set up before, and ended after, every other fixture of the module."""
+    log = os.environ.get("LAB_TEST_COST_LOG")
+    wall, cpu = time.monotonic(), _cpu_seconds()
+    yield
+    if log:
+        line = {"module": str(Path(request.node.path).relative_to(REPO_ROOT)),
+                "wall_s": round(time.monotonic() - wall, 2), "cpu_s": round(_cpu_seconds() - cpu, 2)}
+        with open(log, "a") as stream:
+            stream.write(json.dumps(line) + "\n")
