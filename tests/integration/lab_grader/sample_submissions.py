@@ -1,10 +1,28 @@
 """Sample submissions for the grader's tests, made from the lab's own Week 4 reference package (never from real
-students' code): the reference as it is, and copies with one typical mistake each, written as a student would
-make it. `make_submission(name, folder)` writes one into `folder/<name>/`."""
+students' code): the reference as it is, copies with one typical mistake each, written as a student would make
+it, copies that misbehave on purpose against the sandbox (hostile_code.py), and one package written from scratch
+in a student's own style (student_style/). `make_submission(name, folder)` writes one into `folder/<name>/`."""
+import re
 import shutil
 from pathlib import Path
+from typing import Dict, Optional
 
-REFERENCE = Path(__file__).resolve().parents[3] / "catkin_ws" / "src" / "exercises" / "week4_services"
+from .hostile_code import FORKS_CHILDREN, PRINTS_MEGABYTES, REACHES_NETWORK, SNOOPS
+
+HERE = Path(__file__).resolve().parent
+REFERENCE = HERE.parents[2] / "catkin_ws" / "src" / "exercises" / "week4_services"
+# Written from scratch, not from the reference: {name: the package folder}.
+FROM_SCRATCH = {"student_style": HERE / "student_style" / "week4_alice"}
+
+PLACEHOLDER = re.compile(r"@[A-Z_]+@")
+MOVE_MAIN = "def main():\n    rospy.init_node(NODE_NAME)\n"
+
+
+def misbehaves_at_start(code: str, call: str):
+    """The move server with `code` (functions) added and `call` made first thing in main()."""
+    return {"nodes/move_server.py": [(MOVE_MAIN, code + "\n\n" + MOVE_MAIN.replace("main():\n", "main():\n    "
+                                                                                  + call + "\n"))]}
+
 
 MISTAKES = {
     # name: {file in the package: [(text in the reference, what the student wrote instead)]}
@@ -20,12 +38,54 @@ MISTAKES = {
     "busy_waits": {"nodes/move_server.py": [
         ("        if not request.request_signal:", "        while True:\n            pass\n"
                                                     "        if not request.request_signal:")]},
+    # The timed move drives for twice the duration asked for.
+    "wrong_duration": {"nodes/timed_move_server.py": [("request.movement_request, request.duration,",
+                                                       "request.movement_request, request.duration * 2,")]},
+    # The "stop" after the move is a copy of the line that started it: the robot keeps driving.
+    "never_stops": {"nodes/move_server.py": [
+        ("        elapsed = (rospy.get_rostime() - start_time).to_sec()",
+         "        self.robot.drive(FORWARD_SPEED_MPS, 0.0)  # stop the robot\n"
+         "        elapsed = (rospy.get_rostime() - start_time).to_sec()")]},
+    # Any word drives forwards, any duration is taken as it is (0 and -2 s reply True at once).
+    "ignores_invalid_input": {"nodes/timed_move_server.py": [
+        ("from tb3_client.robot import", "from tb3_client.motion import Motion\nfrom tb3_client.robot import"),
+        ("            motion = timed_movement(request.movement_request, request.duration,\n"
+         "                                    self.linear_speed, self.angular_speed)",
+         "            speeds = {\"fwd\": (self.linear_speed, 0.0), \"back\": (-self.linear_speed, 0.0),\n"
+         "                      \"left\": (0.0, self.angular_speed), \"right\": (0.0, -self.angular_speed)}\n"
+         "            linear, angular = speeds.get(request.movement_request, (self.linear_speed, 0.0))\n"
+         "            motion = Motion(linear, angular, request.duration)")]},
+    # Bare values instead of Response objects: rospy converts a tuple of every field, and a single value when the
+    # response has one field (TimedMovement's success), but not one value for SetBool's two fields.
+    "bare_values": {
+        "nodes/move_server.py": [
+            ("return SetBoolResponse(False, \"Nothing happened: set request_signal to 'true' to move the robot.\")",
+             "return False, \"Nothing happened: set request_signal to 'true' to move the robot.\""),
+            ("return SetBoolResponse(True, \"Request complete: the robot moved forwards for {:.1f} seconds.\""
+             ".format(elapsed))", "return True")],
+        "nodes/timed_move_server.py": [("return TimedMovementResponse(False)", "return False"),
+                                       ("return TimedMovementResponse(True)", "return True")]},
+    "own_service_names": {"nodes/move_server.py": [("\"move_service\"", "\"my_move_service\"")],
+                          "nodes/timed_move_server.py": [("\"timed_move_service\"", "\"my_timed_move_service\"")],
+                          "nodes/approach_server.py": [("\"approach_service\"", "\"my_approach_service\"")]},
+    "python2_syntax": {"nodes/move_server.py": [
+        (MOVE_MAIN, MOVE_MAIN.replace("main():\n", "main():\n    print \"Starting the move server...\"\n"))]},
+    # Hostile on purpose (hostile_code.py); each still serves /move_service like the reference once it has tried.
+    "forks_children": misbehaves_at_start(FORKS_CHILDREN, "leave_children_behind()"),
+    "reaches_network": misbehaves_at_start(REACHES_NETWORK, "try_the_network()"),
+    "snoops": misbehaves_at_start(SNOOPS, "snoop()"),
+    "prints_megabytes": misbehaves_at_start(PRINTS_MEGABYTES, "shout()"),
 }
 
 
-def make_submission(name: str, folder: Path) -> Path:
-    """The submission `name` (a key of MISTAKES) as a student folder holding the package; returns the folder."""
+def make_submission(name: str, folder: Path, fill: Optional[Dict[str, str]] = None) -> Path:
+    """The submission `name` (a key of MISTAKES or FROM_SCRATCH) as a student folder holding the package; returns
+    the folder. `fill` replaces placeholders (hostile_code.py's @NAME@) in the files the mistake changed."""
     student = Path(folder) / name
+    if name in FROM_SCRATCH:
+        shutil.copytree(FROM_SCRATCH[name], student / FROM_SCRATCH[name].name,
+                        ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
+        return student
     package = student / "week4_services"
     shutil.copytree(REFERENCE, package, ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
     for relative, replacements in MISTAKES[name].items():
@@ -34,5 +94,8 @@ def make_submission(name: str, folder: Path) -> Path:
         for old, new in replacements:
             assert old in text, "the reference changed: {} no longer has {!r}".format(relative, old)
             text = text.replace(old, new, 1)
+        for placeholder, value in (fill or {}).items():
+            text = text.replace(placeholder, value)
+        assert not PLACEHOLDER.search(text), "{}: {} was not filled".format(relative, PLACEHOLDER.search(text))
         path.write_text(text)
     return student

@@ -1,7 +1,8 @@
 """`rosrun lab_grader grade` on a small class of sample submissions (tests/integration/lab_grader/
-sample_submissions.py: the lab's reference and copies with one typical mistake each), graded in parallel in their
-sandboxes: each gets the verdicts its mistake deserves, with evidence; every report renders in a real headless
-Chromium with its trajectory picture; and two shards merged give the files of one run."""
+sample_submissions.py: the lab's reference, copies with one typical mistake each, and a package written from scratch
+in a student's own style), graded in parallel in their sandboxes in one run: each gets the verdicts its mistake
+deserves, with evidence; every report renders in a real headless Chromium with its trajectory picture; and two
+shards merged give the files of one run. (test_grade_hostile.py grades submissions that attack the sandbox.)"""
 import csv
 import json
 import os
@@ -14,6 +15,10 @@ from roslab.browser import HeadlessBrowser
 from .sample_submissions import make_submission
 
 GRADE_TIMEOUT_S = 900
+CLASS = ("reference", "wrong_direction", "old_message_package", "does_not_build", "student_style", "wrong_duration",
+         "never_stops", "ignores_invalid_input", "bare_values", "own_service_names", "python2_syntax")
+TIMED_MOVES = {"timed_fwd": 2, "timed_back": 2, "timed_left": 3, "timed_right": 3}   # check: seconds requested
+INVALID_TIMED_MOVES = ("timed_invalid_word", "timed_zero_duration", "timed_negative_duration")
 
 
 def grade(env, *args):
@@ -31,6 +36,16 @@ def verdicts(result):
     return {check["id"]: check["verdict"] for check in result["checks"]}
 
 
+def check(result, check_id):
+    return next(check for check in result["checks"] if check["id"] == check_id)
+
+
+def others_pass(result, *check_ids):
+    """Every check but `check_ids` passed."""
+    others = {check_id: verdict for check_id, verdict in verdicts(result).items() if check_id not in check_ids}
+    assert others and set(others.values()) == {"pass"}, others
+
+
 @pytest.fixture(scope="module")
 def env(ros_master):
     """The ROS terminal's environment; the grader starts its own masters inside the sandboxes."""
@@ -40,7 +55,7 @@ def env(ros_master):
 @pytest.fixture(scope="module")
 def graded(env, tmp_path_factory):
     folder = tmp_path_factory.mktemp("class")
-    for name in ("reference", "wrong_direction", "old_message_package", "does_not_build"):
+    for name in CLASS:
         make_submission(name, folder)
     out = tmp_path_factory.mktemp("grades")
     output = grade(env, folder, "--suite", "week4", "--out", out, "--jobs", "2", "--rtf", "2")
@@ -48,24 +63,97 @@ def graded(env, tmp_path_factory):
 
 
 @pytest.mark.slow
-def test_the_reference_and_the_old_message_package_score_full_marks(graded):
+def test_the_reference_the_old_message_package_and_a_students_own_style_score_full_marks(graded):
     out, output = graded
     graded_results = results(out)
-    for name in ("reference", "old_message_package"):
+    for name in ("reference", "old_message_package", "student_style"):
         result = graded_results[name]
         assert result["score"] == result["max_score"] > 0, json.dumps(result, indent=1)[:3000]
         assert set(verdicts(result).values()) == {"pass"}
-    assert "[4/4]" in output
+    assert graded_results["student_style"]["packages"] == ["week4_alice"]
+    assert {node["package"] for node in graded_results["student_style"]["nodes"]} == {"week4_alice"}
+    assert "[{0}/{0}]".format(len(CLASS)) in output
 
 
 @pytest.mark.slow
 def test_driving_backwards_fails_the_move_check_with_the_evidence(graded):
     result = results(graded[0])["wrong_direction"]
-    move = next(check for check in result["checks"] if check["id"] == "move_true")
+    move = check(result, "move_true")
     assert move["verdict"] == "fail"
     assert move["evidence"]["motion"]["forward_m"] < -0.3
-    others = {check_id: verdict for check_id, verdict in verdicts(result).items() if check_id != "move_true"}
-    assert set(others.values()) == {"pass"}, others
+    others_pass(result, "move_true")
+
+
+@pytest.mark.slow
+def test_moving_for_twice_the_duration_fails_the_timed_moves_with_the_measured_duration(graded):
+    result = results(graded[0])["wrong_duration"]
+    for check_id, seconds in TIMED_MOVES.items():
+        timed = check(result, check_id)
+        assert timed["verdict"] == "fail", timed
+        assert "expected the motion to last" in timed["reason"] and "it moved for" in timed["reason"], timed
+        assert abs(timed["evidence"]["motion"]["duration_s"] - 2 * seconds) < 0.5, timed["evidence"]["motion"]
+        assert timed["evidence"]["reply"] == {"success": True}
+    others_pass(result, *TIMED_MOVES)
+
+
+@pytest.mark.slow
+def test_a_robot_that_is_never_stopped_fails_the_move_check_still_moving(graded):
+    result = results(graded[0])["never_stops"]
+    move = check(result, "move_true")
+    assert move["verdict"] == "fail"
+    assert "still moving" in move["reason"] and "expected the robot to be still" in move["reason"], move["reason"]
+    motion = move["evidence"]["motion"]
+    assert motion["still_at_end"] is False and motion["stopped_after_s"] is None, motion
+    assert motion["end_v"] > 0.05
+    others_pass(result, "move_true")
+
+
+@pytest.mark.slow
+def test_a_timed_move_that_accepts_anything_fails_the_invalid_input_checks(graded):
+    result = results(graded[0])["ignores_invalid_input"]
+    for check_id in INVALID_TIMED_MOVES:
+        invalid = check(result, check_id)
+        assert invalid["verdict"] == "fail", invalid
+        assert "expected success False, it replied True" in invalid["reason"], invalid["reason"]
+        assert invalid["evidence"]["reply"] == {"success": True}
+    jump = check(result, "timed_invalid_word")
+    assert "expected to stay within 0.01 m" in jump["reason"] and jump["evidence"]["motion"]["forward_m"] > 0.1
+    others_pass(result, *INVALID_TIMED_MOVES)
+
+
+@pytest.mark.slow
+def test_bare_return_values_error_where_rospy_cannot_make_a_response_of_them(graded):
+    """rospy makes a response of a tuple of every field (move_false) and of one value for a one-field response
+    (TimedMovement), but `return True` for SetBool's two fields is an error answer to the caller."""
+    result = results(graded[0])["bare_values"]
+    move = check(result, "move_true")
+    assert move["verdict"] == "error"
+    assert "responded with an error" in move["reason"] and "handler returned invalid value" in move["reason"]
+    assert move["evidence"]["server_error"] and move["evidence"]["reply"] is None
+    assert move["evidence"]["motion"]["forward_m"] > 0.4, "it drove before it failed to answer"
+    others_pass(result, "move_true")
+
+
+@pytest.mark.slow
+def test_services_under_the_students_own_names_are_found_by_type_and_pass(graded):
+    result = results(graded[0])["own_service_names"]
+    others_pass(result)
+    for name in ("/move_service", "/timed_move_service", "/approach_service"):
+        service = result["services"][name]
+        assert service["found_by"] == "by type" and service["found"] == "/my" + name.replace("/", "_"), service
+
+
+@pytest.mark.slow
+def test_a_python2_print_statement_kills_the_node_and_errors_its_checks_with_the_log(graded):
+    result = results(graded[0])["python2_syntax"]
+    for check_id in ("move_true", "move_false"):
+        move = check(result, check_id)
+        assert move["verdict"] == "error" and move["reason"].startswith("service /move_service not found"), move
+    others_pass(result, "move_true", "move_false")
+    assert result["services"]["/move_service"]["found"] is None
+    node = next(node for node in result["nodes"] if node["file"] == "move_server.py")
+    assert node["running_at_end"] is False and "SyntaxError" in node["log_tail"], node
+    assert all(node["running_at_end"] for node in result["nodes"] if node["file"] != "move_server.py")
 
 
 @pytest.mark.slow
@@ -77,10 +165,10 @@ def test_a_package_that_does_not_build_gets_zero_and_its_build_log(graded):
 
 @pytest.mark.slow
 def test_the_class_csv_has_a_row_per_student(graded):
-    rows = list(csv.DictReader((graded[0] / "class.csv").open()))
-    assert [row["student"] for row in rows] == ["does_not_build", "old_message_package", "reference",
-                                                "wrong_direction"]
-    assert rows[3]["move_true"] == "fail" and rows[0]["builds"] == "no"
+    rows = {row["student"]: row for row in csv.DictReader((graded[0] / "class.csv").open())}
+    assert list(rows) == sorted(CLASS)
+    assert rows["wrong_direction"]["move_true"] == "fail" and rows["does_not_build"]["builds"] == "no"
+    assert rows["bare_values"]["move_true"] == "error" and rows["student_style"]["percent"] == "100.0"
 
 
 @pytest.mark.slow
@@ -110,3 +198,16 @@ def test_two_shards_merged_equal_one_run(env, tmp_path):
     assert sorted(p.name for p in (tmp_path / "s1").iterdir() if p.is_dir()) == ["ann", "cat"]
     for name in ("class.csv", "summary.json"):
         assert (tmp_path / "merged" / name).read_text() == (tmp_path / "whole" / name).read_text()
+
+
+@pytest.mark.slow
+def test_a_rerun_gives_identical_scores_and_verdicts(env, graded, tmp_path):
+    """The same submissions graded again (same suite, same factor): the same score and the same verdict for every
+    check, also where the measured motion decides (a duration, a direction)."""
+    again = ("wrong_direction", "wrong_duration")
+    for name in again:
+        make_submission(name, tmp_path / "class")
+    grade(env, tmp_path / "class", "--suite", "week4", "--out", tmp_path / "again", "--jobs", "2", "--rtf", "2")
+    first, second = results(graded[0]), results(tmp_path / "again")
+    for name in again:
+        assert (second[name]["score"], verdicts(second[name])) == (first[name]["score"], verdicts(first[name]))

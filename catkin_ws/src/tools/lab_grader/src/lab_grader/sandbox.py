@@ -191,11 +191,19 @@ class SubmissionSandbox:
                 os.lchown(name, self.uid, self.gid)
         return dest
 
+    def trusted_env(self, env: Dict[str, str]) -> Dict[str, str]:
+        """`env` with ROS_HOME and ROS_LOG_DIR in a root-only folder of this box, removed by close(): roscore's
+        rosout.log holds every log line of the student's nodes, which must not pile up in root's ~/.ros."""
+        ros_home = self._box_dir / "trusted_ros"
+        ros_home.mkdir(mode=0o700, exist_ok=True)
+        return dict(env, ROS_HOME=str(ros_home), ROS_LOG_DIR=str(ros_home / "log"))
+
     def start_trusted(self, argv: Sequence[str], env: Dict[str, str], log_path: Path,
                       cwd: Optional[Path] = None) -> SandboxProcess:
-        """Start a grader's command as root inside the box's network namespace; stopped by close() at the
-        latest."""
+        """Start a grader's command as root inside the box's network namespace, with `env` made `trusted_env`;
+        stopped by close() at the latest."""
         self._check_log_path(log_path)
+        env = self.trusted_env(env)
         full_argv = (self._netns.enter_argv() + [self._tools["setpriv"], "--pdeathsig", "KILL", "--"] + list(argv))
         with open(log_path, "wb") as log:
             popen = subprocess.Popen(full_argv, env=env, cwd=cwd, stdin=subprocess.DEVNULL, stdout=log,

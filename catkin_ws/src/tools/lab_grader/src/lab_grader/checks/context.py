@@ -34,6 +34,7 @@ Topics and services are tb3_sim's single robot in the root namespace: /odom, /sc
 """
 import math
 import os
+import re
 import threading
 import time
 from typing import Dict, Sequence
@@ -70,6 +71,7 @@ RESET_MARGIN_S = 0.1           # only /odom stamped this much sim time after the
 FRONT_SCAN_WAIT_SIM_S = 2.0    # a fresh /scan (5 Hz) must come within this much sim time
 ACTION_CONNECT_WALL_S = 5.0    # an action client must connect to the server's topics within this
 SERVER_ERROR_TEXT = "responded with an error"   # rospy's words for a server's error answer (its callback raised)
+SERVER_ERROR_BYTES = re.compile(r"(responded with an error: )b(['\"])(.*)\2$", re.DOTALL)
 POLL_WALL_S = 0.2              # service discovery polls the master this often
 STATE_NAMES = {getattr(GoalStatus, name): name for name in GOAL_STATES}   # 3 -> "SUCCEEDED"
 WAIT_SLICE_WALL_S = 0.01
@@ -133,8 +135,10 @@ class _Call:
         try:
             self.reply = proxy.call(request)
         except Exception as error:  # noqa: BLE001 - whatever the student's server does becomes the verdict's text
-            self.error = "the call failed: {}: {}".format(type(error).__name__, error)
-            self.server_error = SERVER_ERROR_TEXT in str(error)
+            # rospy shows the server's error text as a bytes literal (responded with an error: b'...'): unwrap it
+            text = SERVER_ERROR_BYTES.sub(r"\1\3", str(error))
+            self.error = "the call failed: {}: {}".format(type(error).__name__, text)
+            self.server_error = SERVER_ERROR_TEXT in text
         finally:
             self.replied_s = rospy.get_rostime().to_sec()
             self.done.set()
