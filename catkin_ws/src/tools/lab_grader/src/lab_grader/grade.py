@@ -23,9 +23,6 @@ BUILD_TIMEOUT_S = 300.0
 SIMULATOR_START_S = 60.0
 SIMULATOR_READY_SERVICE = "/gazebo/reset_world"
 MASTER_READY_SERVICE = "/rosout/get_loggers"    # roscore's rosout node is up: the master answers
-NODE_SETTLE_S = 2.0
-"""Wall seconds the student's nodes get to advertise their services before the checks look for them (the check
-runner waits longer for each service itself)."""
 CHECKS_TIMEOUT_S = 600.0
 LOG_TAIL_CHARS = 3000
 ROS_PORT = 11311
@@ -149,7 +146,7 @@ class SubmissionGrader:
             log = out_dir / "node-{}.log".format(file_name)
             process = box.start_student(overlay("exec rosrun {} {}".format(package, file_name)), env, log)
             nodes.append((NodeStart(file_name, package, None), process, log))
-        time.sleep(NODE_SETTLE_S)
+        # No pause for the nodes to start: the check runner waits for each service itself (the suite's wait_s).
         checks_log = out_dir / "checks.log"
         on_stage("checks", checks_log)
         run = box.run_trusted(["rosrun", "lab_grader", "run_checks", "--suite", str(self.suite.path),
