@@ -1,12 +1,14 @@
 """lab_grader benchmarks for scripts/bench (wall-clock figures; never asserted):
 
-- wall time to grade one Week 4 submission (the lab's reference) at real-time factor 1 and 2 (target <= 45 s);
-- wall time to grade a class of CLASS_SIZE sample submissions (tests/integration/lab_grader/sample_submissions.py,
-  each mistake in turn), 2 at a time at factor 2 (target <= 10 min on 2 cores);
-- how many check verdicts of the distinct samples are the same at factor 2 as at factor 1 (all of them, or the
-  faster factor would not be used).
+- wall time to grade one Week 4 submission (the lab's reference) at real-time factor 1 and 2 (target <= 45 s),
+  and where the time goes at each factor (the stages result.json records: building, starting, checks);
+- how many check verdicts of the distinct samples (tests/integration/lab_grader/sample_submissions.py: every
+  mistake and every self-contained hostile one) are the same at factor 2 as at factor 1: all of them, or the faster
+  factor would not be used;
+- wall time to grade a class of CLASS_SIZE sample submissions (each sample in turn), 2 at a time at factor 2
+  (target <= 10 min on 2 cores).
 
-    source scripts/env.sh && python3 tests/bench/grade_bench.py [class size]
+    source scripts/env.sh && python3 tests/bench/grade_bench.py [class size]      (as root, like the grader)
 """
 import json
 import subprocess
@@ -15,26 +17,29 @@ import tempfile
 import time
 from pathlib import Path
 
-TESTS = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(TESTS / "integration" / "lab_grader"))
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from sample_submissions import MISTAKES, make_submission  # noqa: E402  (needs the sys.path entry above)
+from integration.lab_grader.sample_submissions import SELF_CONTAINED, make_submission  # noqa: E402
 
 CLASS_SIZE = 20
 FAST_FACTOR = 2
 ONE_TARGET_S = 45.0
 CLASS_TARGET_S = 600.0
+STAGES = ("building", "starting the simulator", "checks")
 
 
 def grade(folder, out, factor, jobs):
-    """Wall seconds of `rosrun lab_grader grade` on `folder`, and {student: {check: verdict}}."""
+    """Wall seconds of `rosrun lab_grader grade` on `folder`, and {student: its result}."""
     started = time.monotonic()
     subprocess.run(["rosrun", "lab_grader", "grade", str(folder), "--suite", "week4", "--out", str(out),
                     "--jobs", str(jobs), "--rtf", str(factor)], check=True, stdout=subprocess.DEVNULL)
     elapsed = time.monotonic() - started
-    verdicts = {path.parent.name: {check["id"]: check["verdict"] for check in json.loads(path.read_text())["checks"]}
-                for path in Path(out).glob("*/result.json")}
-    return elapsed, verdicts
+    return elapsed, {path.parent.name: json.loads(path.read_text()) for path in Path(out).glob("*/result.json")}
+
+
+def verdicts(results):
+    return {student: {check["id"]: check["verdict"] for check in result["checks"]}
+            for student, result in results.items()}
 
 
 def run(class_size=CLASS_SIZE):
@@ -43,20 +48,24 @@ def run(class_size=CLASS_SIZE):
         work = Path(workdir)
         make_submission("reference", work / "one")
         for factor in (1, FAST_FACTOR):
-            seconds, _ = grade(work / "one", work / "one-out-{}".format(factor), factor, jobs=1)
+            seconds, results = grade(work / "one", work / "one-out-{}".format(factor), factor, jobs=1)
             rows.append(("grade one Week 4 submission (reference), factor {}".format(factor), seconds, "s",
                          ONE_TARGET_S, "<="))
-        for name in MISTAKES:
+            stages = results["reference"]["stage_s"]
+            print("factor {}: {}".format(factor, ", ".join("{} {:.1f} s".format(stage, stages.get(stage, 0))
+                                                           for stage in STAGES)))
+        for name in SELF_CONTAINED:
             make_submission(name, work / "distinct")
         _, slow = grade(work / "distinct", work / "distinct-1", 1, jobs=2)
         _, fast = grade(work / "distinct", work / "distinct-{}".format(FAST_FACTOR), FAST_FACTOR, jobs=2)
+        slow, fast = verdicts(slow), verdicts(fast)
         checks = [(student, check) for student in slow for check in slow[student]]
         same = sum(slow[student][check] == fast.get(student, {}).get(check) for student, check in checks)
-        rows.append(("check verdicts of {} samples alike at factor {} and 1".format(len(MISTAKES), FAST_FACTOR),
+        rows.append(("check verdicts of {} samples alike at factor {} and 1".format(len(SELF_CONTAINED),
+                                                                                  FAST_FACTOR),
                      same, "checks", len(checks), ">="))
-        names = list(MISTAKES)
         for index in range(class_size):
-            make_submission(names[index % len(names)], work / "class").rename(
+            make_submission(SELF_CONTAINED[index % len(SELF_CONTAINED)], work / "class").rename(
                 work / "class" / "student{:02d}".format(index + 1))
         seconds, _ = grade(work / "class", work / "class-out", FAST_FACTOR, jobs=2)
         rows.append(("grade a class of {} samples, 2 at a time, factor {}".format(class_size, FAST_FACTOR), seconds,

@@ -17,9 +17,8 @@ from pathlib import Path
 
 TESTS = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(TESTS))
-sys.path.insert(0, str(TESTS / "integration" / "lab_grader"))
 
-from sample_submissions import MISTAKES, make_submission  # noqa: E402  (needs the sys.path entries above)
+from integration.lab_grader.sample_submissions import SELF_CONTAINED, make_submission  # noqa: E402
 
 from roslab.browser import HeadlessBrowser  # noqa: E402
 
@@ -35,9 +34,9 @@ def main(out_dir):
     out_dir.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="grade-screenshots-") as workdir:
         work = Path(workdir)
-        for name in MISTAKES:
+        for name in SELF_CONTAINED:
             make_submission(name, work / "class")
-        say("grading {} sample submissions (a few minutes)".format(len(MISTAKES)))
+        say("grading {} sample submissions (a few minutes)".format(len(SELF_CONTAINED)))
         subprocess.run(["rosrun", "lab_grader", "grade", str(work / "class"), "--suite", "week4", "--out",
                         str(work / "grades"), "--jobs", "2", "--rtf", "2"], check=True)
         browser = HeadlessBrowser()

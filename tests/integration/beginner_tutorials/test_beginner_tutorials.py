@@ -261,6 +261,10 @@ def feedback_values(output):
     return [int(line[len(prefix):]) for line in output.splitlines() if line.startswith(prefix)]
 
 
+# The first feedback goes out as soon as the goal arrives. On a starved CPU the server's feedback publisher may not yet
+# have added a connection the client already counts as made (actionlib's wait_for_server checks the client's side),
+# and feedback 0 is lost: these two run with the realtime tests.
+@pytest.mark.realtime
 def test_counter_succeeds_with_feedback_in_order(ros_master, counter_server):
     result = rosrun(ros_master, "counter_client.py", "3")
     assert result.returncode == 0, result.stdout + result.stderr
@@ -268,6 +272,7 @@ def test_counter_succeeds_with_feedback_in_order(ros_master, counter_server):
     assert result.stdout.splitlines()[-2:] == ["state: SUCCEEDED", "result: Counting complete!"]
 
 
+@pytest.mark.realtime
 def test_counter_cancel_preempts(ros_master, counter_server):
     result = rosrun(ros_master, "counter_client.py", "10", "--cancel-after", "1.5")
     assert result.returncode == 0, result.stdout + result.stderr

@@ -78,6 +78,13 @@ MISTAKES = {
 }
 
 
+SELF_CONTAINED = tuple(name for name, changes in MISTAKES.items()
+                       if not any(PLACEHOLDER.search(new) for replacements in changes.values()
+                                  for _, new in replacements)) + tuple(FROM_SCRATCH)
+"""The samples that need no `fill` (every one but those whose hostile code needs the test's paths and addresses):
+what a benchmark can grade as a class."""
+
+
 def make_submission(name: str, folder: Path, fill: Optional[Dict[str, str]] = None) -> Path:
     """The submission `name` (a key of MISTAKES or FROM_SCRATCH) as a student folder holding the package; returns
     the folder. `fill` replaces placeholders (hostile_code.py's @NAME@) in the files the mistake changed."""

@@ -16,7 +16,7 @@ import pytest
 import yaml
 
 from lab_grader.grade import STUDENT_LIMITS
-from lab_grader.sandbox import STUDENT_UID_BASE
+from lab_grader.sandbox import GRADER_SLOTS, STUDENT_UID_BASE
 from lab_grader.sandbox_process import TRUNCATED_MARKER
 
 from .conftest import LAB_ROOT
@@ -24,7 +24,7 @@ from .hostile_code import CHILDREN, REPORT_PREFIX, SLEEP_SECONDS
 from .sample_submissions import make_submission
 from .test_grade_class import check, grade, results
 
-SANDBOX_UIDS = range(STUDENT_UID_BASE, STUDENT_UID_BASE + 100)
+SANDBOX_UIDS = range(STUDENT_UID_BASE, STUDENT_UID_BASE + GRADER_SLOTS)
 HOSTILE = ("forks_children", "reaches_network", "snoops", "prints_megabytes", "hangs_in_the_callback", "busy_waits")
 NEIGHBOUR = "victim"        # sorts after "snoops": the two are graded at about the same time
 SECRET_FILE = "secret_token.txt"
@@ -54,8 +54,8 @@ def host_address():
     return addresses[0] if addresses else None
 
 
-def sandbox_processes():
-    """{pid: command line} of every live process whose real uid is a sandbox slot's."""
+def sandbox_processes(uids=SANDBOX_UIDS):
+    """{pid: command line} of every live process whose real uid is one of `uids` (default: any grader slot's)."""
     found = {}
     for entry in os.listdir("/proc"):
         if not entry.isdigit():
@@ -67,7 +67,7 @@ def sandbox_processes():
             continue
         uid = int(re.search(r"^Uid:\s+(\d+)", status, re.M).group(1))
         state = re.search(r"^State:\s+(\S)", status, re.M).group(1)
-        if uid in SANDBOX_UIDS and state not in "ZX":
+        if uid in uids and state not in "ZX":
             found[int(entry)] = cmdline.replace(b"\0", b" ").decode(errors="replace").strip()
     return found
 
@@ -130,14 +130,16 @@ def hostile(env, ros_master, tmp_path_factory):
         watch.done.set()
         watch.join()
     wall_s = time.monotonic() - started
-    left = sandbox_processes()
+    # Only this run's uids: another grade run (a test module next to this one) may be busy in other slots.
+    uids = {result["sandbox_uid"] for result in results(out).values()}
+    left = sandbox_processes(uids)
     control = None
     if address:
         with socket.create_connection((address, listener.getsockname()[1]), timeout=5):
             control = "connected"
     listener.close()
     return dict(out=out, output=output, token=token, planted=planted, secret=secret, address=address,
-                control=control, watch=watch, left=left, wall_s=wall_s)
+                control=control, watch=watch, left=left, wall_s=wall_s, uids=uids)
 
 
 @pytest.mark.slow
@@ -159,7 +161,7 @@ def test_children_that_leave_the_session_do_not_outlive_the_grading(hostile):
     assert report(hostile["out"], "forks_children") == {"children": CHILDREN}
     assert hostile["watch"].most > 0, "the children were never seen running"
     assert hostile["left"] == {}, "processes of a sandbox uid outlived the grader: {}".format(hostile["left"])
-    assert sandbox_processes() == {}
+    assert sandbox_processes(hostile["uids"]) == {}
     result = results(hostile["out"])["forks_children"]
     assert {check["verdict"] for check in result["checks"]} == {"pass"}
 

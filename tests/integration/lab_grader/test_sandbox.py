@@ -12,7 +12,7 @@ import pytest
 
 from lab_grader import procfs
 from lab_grader.errors import SandboxError
-from lab_grader.sandbox import STUDENT_NICENESS, SubmissionSandbox
+from lab_grader.sandbox import GRADER_SLOTS, STUDENT_NICENESS, SubmissionSandbox, reserve_slot
 from lab_grader.sandbox_process import StopReason
 
 from .conftest import LAB_ROOT, SLOT_A, TEST_LIMITS, last_json
@@ -280,3 +280,18 @@ def test_after_the_box_closes_nothing_of_it_remains(work_root, env, tmp_path):
     assert not box_dir.exists()
     with SubmissionSandbox(work_root, SLOT_A, LAB_ROOT, TEST_LIMITS):
         pass  # the slot is free again
+
+
+def test_grader_workers_reserve_distinct_slots_machine_wide():
+    """Two workers (of one grade run, or of two at once) never hold the same slot, and a released slot can be
+    reserved again."""
+    first, second = reserve_slot(), reserve_slot()
+    try:
+        assert first.slot != second.slot and {first.slot, second.slot} <= set(range(GRADER_SLOTS))
+        first.release()
+        third = reserve_slot()
+        assert third.slot != second.slot
+        third.release()
+    finally:
+        first.release()
+        second.release()

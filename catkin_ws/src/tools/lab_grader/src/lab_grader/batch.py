@@ -105,17 +105,14 @@ class Progress:
 
 
 def grade_all(submissions, make_grader, out_root, jobs: int, progress: Progress) -> List[dict]:
-    """Grade every submission, `jobs` at a time: `make_grader(slot)` gives a grader for one worker's slot (slots
-    0..jobs-1), and each worker grades into out_root/<student>/, reporting its stages to `progress`; a status
-    line is printed every STATUS_EVERY_S until all are done."""
-    slots = list(range(jobs))
-    slot_lock = threading.Lock()
+    """Grade every submission, `jobs` at a time: `make_grader()` gives a grader for one worker (made once per
+    worker thread, in that thread), and each worker grades into out_root/<student>/, reporting its stages to
+    `progress`; a status line is printed every STATUS_EVERY_S until all are done."""
     local = threading.local()
 
     def grade_one(submission):
         if not hasattr(local, "grader"):
-            with slot_lock:
-                local.grader = make_grader(slots.pop(0))
+            local.grader = make_grader()
         result = local.grader.grade(submission, out_root / submission.student_id,
                                     on_stage=lambda what, log=None: progress.stage(submission.student_id, what, log))
         progress.finished(result)

@@ -20,6 +20,7 @@ import rospkg
 from lab_grader.batch import Progress, grade_all, parse_shard
 from lab_grader.class_report import read_results, write_class_report
 from lab_grader.grade import SubmissionGrader
+from lab_grader.sandbox import reserve_slot
 from lab_grader.submissions import find_submissions
 from lab_grader.suite_file import SuiteError, load_suite
 
@@ -94,11 +95,19 @@ def grade_class(args, suite, shard, work_root):
     print("grade: {} submissions, suite {}, {} at a time{}".format(
         len(submissions), suite.name, jobs, ", shard {}/{}".format(*shard) if shard else ""))
 
-    def make_grader(slot):
-        return SubmissionGrader(suite, work_root / "boxes", lab_root(), slot, dict(os.environ), args.rtf)
+    reservations = []
+
+    def make_grader():   # called by each worker thread
+        reservation = reserve_slot()   # a slot no other worker on this machine uses meanwhile
+        reservations.append(reservation)
+        return SubmissionGrader(suite, work_root / "boxes", lab_root(), reservation.slot, dict(os.environ), args.rtf)
 
     (work_root / "boxes").mkdir(mode=0o711)
-    grade_all(submissions, make_grader, args.out, jobs, Progress(len(submissions)))
+    try:
+        grade_all(submissions, make_grader, args.out, jobs, Progress(len(submissions)))
+    finally:
+        for reservation in reservations:
+            reservation.release()
     write_class_report(read_results([args.out]), args.out)
     print("grade: results in {} (class.csv, summary.json, one folder per student)".format(args.out))
     return 2 if rejected else 0

@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import Dict, List, NamedTuple, Optional
 
 from lab_grader.html_report import report_html
-from lab_grader.sandbox import Limits, SubmissionSandbox
+from lab_grader.sandbox import STUDENT_UID_BASE, Limits, SubmissionSandbox
 from lab_grader.submissions import read_package_name
 
 BUILD_TIMEOUT_S = 300.0
@@ -93,14 +93,26 @@ class SubmissionGrader:
         out_dir.mkdir(parents=True, exist_ok=True)
         started = time.monotonic()
         result = {"student": submission.student_id, "suite": self.suite.name, "packages": list(submission.packages),
-                  "real_time_factor": self.real_time_factor, "build": None, "nodes": [], "checks": [],
-                  "services": {}, "score": 0.0, "max_score": self.suite.max_score, "problems": []}
+                  "real_time_factor": self.real_time_factor, "sandbox_uid": STUDENT_UID_BASE + self.slot,
+                  "build": None, "nodes": [], "checks": [], "services": {}, "score": 0.0,
+                  "max_score": self.suite.max_score, "problems": []}
+        stages = [("sandbox", started)]
+
+        def stage(what, checks_log=None):
+            stages.append((what, time.monotonic()))
+            on_stage(what, checks_log)
+
         try:
             with SubmissionSandbox(self.work_root, self.slot, self.lab_root, self.limits) as box:
-                self._grade_in(box, submission, out_dir, result, on_stage)
+                self._grade_in(box, submission, out_dir, result, stage)
+                stages.append(("closing", time.monotonic()))
         except Exception as error:   # noqa: BLE001 - the batch goes on; the reason is in the result
             result["problems"].append("grading stopped: {}".format(error))
-        result["duration_s"] = round(time.monotonic() - started, 1)
+        finished = time.monotonic()
+        result["duration_s"] = round(finished - started, 1)
+        # Wall seconds per stage (sandbox set-up, copying, building, starting, checks, closing): where time goes.
+        result["stage_s"] = {what: round(end - begin, 1) for (what, begin), (_, end)
+                             in zip(stages, stages[1:] + [(None, finished)])}
         try:
             (out_dir / REPORT_FILE).write_text(report_html(result, self.suite.world))
         except Exception as error:   # noqa: BLE001 - a picture that cannot be drawn must not lose the grades

@@ -86,6 +86,39 @@ class Limits(NamedTuple):
     wall_s: float = 120.0  # wall-clock timeout of run_student/run_trusted when none is given
 
 
+GRADER_SLOTS = 100
+"""Slots 0..GRADER_SLOTS-1 are handed to grader workers by reserve_slot (higher ones are free for tests)."""
+RESERVATION_NAME = "worker-{}.lock"
+
+
+class SlotReservation:
+    """A slot held for one grader worker as long as it lives, machine-wide: a flock on SLOT_LOCK_DIR/worker-<slot>.lock
+    (released by `release()`, or by the kernel when the grader exits however it ends). Two grade runs at once (two
+    instructors, a test next to a real run) so never pick the same slot; each sandbox still locks its slot itself."""
+
+    def __init__(self, slot: int, fd: int):
+        self.slot, self._fd = slot, fd
+
+    def release(self) -> None:
+        if self._fd is not None:
+            os.close(self._fd)
+            self._fd = None
+
+
+def reserve_slot() -> SlotReservation:
+    """The lowest slot no other grader worker holds (SandboxError when all GRADER_SLOTS are taken)."""
+    SLOT_LOCK_DIR.mkdir(mode=0o700, parents=True, exist_ok=True)
+    for slot in range(GRADER_SLOTS):
+        fd = os.open(SLOT_LOCK_DIR / RESERVATION_NAME.format(slot), os.O_RDWR | os.O_CREAT, 0o600)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            os.close(fd)
+            continue
+        return SlotReservation(slot, fd)
+    raise SandboxError("all {} grader slots are taken by other graders".format(GRADER_SLOTS))
+
+
 class SubmissionSandbox:
     """The sandbox of one submission in one parallel slot; a context manager (see the module docstring)."""
 
