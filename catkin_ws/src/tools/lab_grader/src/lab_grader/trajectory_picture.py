@@ -63,7 +63,7 @@ def trajectory_png(world_name, checks) -> bytes:
         axes.set_ylabel("y (m)")
         axes.set_title("Ground-truth trajectories in {} (solid pass, dashed fail, dotted error)".format(world_name),
                        fontsize=9)
-        axes.legend(fontsize=6, loc="upper right")
+        axes.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)  # beside the world
         buffer = io.BytesIO()
         figure.savefig(buffer, format="png", bbox_inches="tight")
         return buffer.getvalue()
