@@ -77,10 +77,12 @@ def _module_cost(request):
     wall seconds and CPU seconds, including the processes it started and ended (tests/bench/suite_cost.py sums
     them up). Set up before, and ended after, every other fixture of the module."""
     log = os.environ.get("LAB_TEST_COST_LOG")
+    if not log:
+        yield
+        return
     wall, cpu = time.monotonic(), _cpu_seconds()
     yield
-    if log:
-        line = {"module": str(Path(request.node.path).relative_to(REPO_ROOT)),
-                "wall_s": round(time.monotonic() - wall, 2), "cpu_s": round(_cpu_seconds() - cpu, 2)}
-        with open(log, "a") as stream:
-            stream.write(json.dumps(line) + "\n")
+    line = {"module": str(Path(request.node.path).relative_to(REPO_ROOT)),
+            "wall_s": round(time.monotonic() - wall, 2), "cpu_s": round(_cpu_seconds() - cpu, 2)}
+    with open(log, "a") as stream:
+        stream.write(json.dumps(line) + "\n")

@@ -89,6 +89,7 @@ class Limits(NamedTuple):
 GRADER_SLOTS = 100
 """Slots 0..GRADER_SLOTS-1 are handed to grader workers by reserve_slot (higher ones are free for tests)."""
 RESERVATION_NAME = "worker-{}.lock"
+TRUSTED_ROS_HOME = "trusted_ros"
 
 
 class SlotReservation:
@@ -187,6 +188,7 @@ class SubmissionSandbox:
         self._namespace = self._netns.namespace
         self._box_dir = Path(tempfile.mkdtemp(prefix="slot{}-".format(self.slot), dir=self.work_root))
         os.chmod(self._box_dir, 0o711)  # the student's uid must pass through to reach its workspace
+        (self._box_dir / TRUSTED_ROS_HOME).mkdir(mode=0o700)   # trusted_env's ROS logs: root only
         self.workspace = self._box_dir / "workspace"
         self.workspace.mkdir(mode=WORKSPACE_MODE)
         os.chown(self.workspace, self.uid, self.gid)
@@ -227,8 +229,7 @@ class SubmissionSandbox:
     def trusted_env(self, env: Dict[str, str]) -> Dict[str, str]:
         """`env` with ROS_HOME and ROS_LOG_DIR in a root-only folder of this box, removed by close(): roscore's
         rosout.log holds every log line of the student's nodes, which must not pile up in root's ~/.ros."""
-        ros_home = self._box_dir / "trusted_ros"
-        ros_home.mkdir(mode=0o700, exist_ok=True)
+        ros_home = self._box_dir / TRUSTED_ROS_HOME
         return dict(env, ROS_HOME=str(ros_home), ROS_LOG_DIR=str(ros_home / "log"))
 
     def start_trusted(self, argv: Sequence[str], env: Dict[str, str], log_path: Path,

@@ -91,27 +91,26 @@ def message_dict(message):
     return message
 
 
+def _load_class(load, name, kind, type_name):
+    """`load(name)` (a roslib loader), or CheckError naming the `kind` of type `type_name` that cannot be imported."""
+    try:
+        loaded = load(name)
+    except (ValueError, ImportError) as error:
+        raise CheckError("cannot load {} type {}: {}".format(kind, type_name, error)) from None
+    if loaded is None:
+        raise CheckError("cannot load {} type {}: is its package built?".format(kind, type_name))
+    return loaded
+
+
 def action_message_class(type_name, part):
     """The Python class <Name><part> ("Action", "Goal") of action type `type_name` (CheckError when it cannot be
     imported)."""
-    try:
-        message_class = roslib.message.get_message_class(type_name + part)
-    except (ValueError, ImportError) as error:
-        raise CheckError("cannot load action type {}: {}".format(type_name, error)) from None
-    if message_class is None:
-        raise CheckError("cannot load action type {}: is its package built?".format(type_name))
-    return message_class
+    return _load_class(roslib.message.get_message_class, type_name + part, "action", type_name)
 
 
 def service_class(type_name):
     """The Python class of service type `type_name` (CheckError when it cannot be imported)."""
-    try:
-        srv_class = roslib.message.get_service_class(type_name)
-    except (ValueError, ImportError) as error:
-        raise CheckError("cannot load service type {}: {}".format(type_name, error)) from None
-    if srv_class is None:
-        raise CheckError("cannot load service type {}: is its package built?".format(type_name))
-    return srv_class
+    return _load_class(roslib.message.get_service_class, type_name, "service", type_name)
 
 
 def _yaw(orientation):
@@ -157,7 +156,6 @@ class GradingContext:
         self._rest_count = 0              # ... consecutive ones, up to the latest
         self._scan = None                 # the latest LaserScan
         self._action_clients = {}         # action name -> SimpleActionClient, made once
-        self._action_specs = []           # the specs find_actions looks for (to word "not found" notes)
         self._sim_seen = (None, time.monotonic())   # (last sim time seen, wall time it changed)
         if not robot:
             return
@@ -262,12 +260,14 @@ class GradingContext:
             cache[key] = (fields.get("type"), fields.get("md5sum"))
         return cache[key]
 
-    def _discover(self, specs: Sequence, by_type_grace_s: float, snapshot, match) -> Dict[str, FoundService]:
+    def _discover(self, kind: str, specs: Sequence, by_type_grace_s: float, snapshot,
+                  match) -> Dict[str, FoundService]:
         """The discovery loop shared by services and actions: poll `snapshot()` (the master's state) until every
         spec is decided or its wait_s has passed. `match(spec, state)` gives (the type if the course's name
         serves the expected type else None, why the course's name does not match or None, [(another name, its
         type)] of the expected type). The course's name wins at once; another name is taken `by_type_grace_s`
-        after it appeared (the course's name may still come), or at the deadline."""
+        after it appeared (the course's name may still come), or at the deadline. `kind` ("service", "action")
+        words the note when nothing is found."""
         started = time.monotonic()
         type_seen_at = {}
         found = {}
@@ -293,7 +293,7 @@ class GradingContext:
                                                         "; ".join(notes) or None)
                 elif deadline_passed:
                     note = wrong_name or "no {} named {} and none of type {} after {:.0f} s".format(
-                        "action" if spec in self._action_specs else "service", spec.name, spec.type, spec.wait_s)
+                        kind, spec.name, spec.type, spec.wait_s)
                     found[spec.name] = FoundService(spec.name, spec.type, None, None, None, note)
             if len(found) == len(specs):
                 return {spec.name: found[spec.name] for spec in specs}
@@ -329,12 +329,11 @@ class GradingContext:
                           if name not in expected_md5 and not name.startswith(own) and header_of(name)[1] == md5]
             return None, wrong_name, candidates
 
-        return self._discover(specs, by_type_grace_s, snapshot, match)
+        return self._discover("service", specs, by_type_grace_s, snapshot, match)
 
     def find_actions(self, specs: Sequence, by_type_grace_s: float) -> Dict[str, FoundService]:
         """Find every action spec (suite_file.ServiceSpec of `actions:`) by its <ns>/result topic, as described in
         the module docstring. Returns {spec.name: FoundService}, `found` being the action namespace."""
-        self._action_specs = list(specs)
         expected = {spec.name: spec.type.split("/")[1] for spec in specs}
 
         def snapshot():
@@ -357,7 +356,7 @@ class GradingContext:
                           if name not in expected and topic_type.split("/")[-1] == wanted]
             return None, wrong_name, candidates
 
-        return self._discover(specs, by_type_grace_s, snapshot, match)
+        return self._discover("action", specs, by_type_grace_s, snapshot, match)
 
     # ---- the robot --------------------------------------------------------------------------------------------------
 

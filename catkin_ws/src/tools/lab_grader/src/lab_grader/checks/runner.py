@@ -59,8 +59,9 @@ def run_suite(suite, make_context, check_timeout_s=None, log=print):
         if suite.actions:
             found.update(context.find_actions(suite.actions, suite.by_type_grace_s))
         services = {name: service.as_json() for name, service in found.items()}
+        action_names = {action.name for action in suite.actions}
         for name, service in found.items():
-            log("{} {}: {}".format("action" if name in {a.name for a in suite.actions} else "service", name,
+            log("{} {}: {}".format("action" if name in action_names else "service", name,
                                    "{} ({}, {})".format(service.found, service.found_by, service.found_type)
                                    if service.found else "not found: {}".format(service.note)))
     except (Interrupted, KeyboardInterrupt):
