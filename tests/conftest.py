@@ -29,17 +29,33 @@ def pytest_configure(config):
     os.environ["LAB_STUDENT_WS"] = "off"
 
 
+def recorded_wall_s(log=REPO_ROOT / "bench-output" / "module_cost.jsonl"):
+    """{test file path: wall seconds} from the last whole scripts/test run (see _module_cost), or {} before one."""
+    try:
+        lines = Path(log).read_text().splitlines()
+    except OSError:
+        return {}
+    walls = {}
+    for line in lines:
+        try:
+            cost = json.loads(line)
+            walls[REPO_ROOT / cost["module"]] = walls.get(REPO_ROOT / cost["module"], 0.0) + float(cost["wall_s"])
+        except (ValueError, KeyError, TypeError):
+            continue
+    return walls
+
+
 def pytest_collection_modifyitems(config, items):
-    """Longest files first, so parallel workers (scripts/test: a whole file per pytest-xdist worker) do not end
-    with one long integration module running alone: files with `slow` tests, then the other integration files,
-    then the quick unit files to fill the gaps. The order of the tests inside a file is kept (a module's tests may
-    build on each other's state)."""
+    """Longest files first, so parallel workers (scripts/test: a whole file per pytest-xdist worker, in this order)
+    do not end with one long integration module running alone: files with `slow` tests, then the other integration
+    files, then the quick unit files to fill the gaps; within each of these, the longest in the last whole run
+    first. The order of the tests inside a file is kept (a module's tests may build on each other's state)."""
     slow_files = {item.path for item in items if item.get_closest_marker("slow")}
+    walls = recorded_wall_s()
 
     def weight(item):
-        if item.path in slow_files:
-            return 0
-        return 1 if "integration" in item.path.parts else 2
+        group = 0 if item.path in slow_files else 1 if "integration" in item.path.parts else 2
+        return group, -walls.get(item.path, 0.0)
     items.sort(key=weight)
 
 

@@ -1,5 +1,6 @@
 """Fuzzing the course's service servers (issue 8, item 1): Week 4, the ROS 2 Services unit ports and the
-beginner_tutorials services, all against one tb3_sim in the approach arena at REAL_TIME_FACTOR.
+beginner_tutorials services, all against one tb3_sim in the approach arena at REAL_TIME_FACTOR (fuzz_graph.py;
+the Week 4 /approach_service has a graph of its own, test_fuzz_approach.py).
 
 Each test sends at least MIN_REQUESTS generated requests to one service (see roslab.fuzz_strategies: NaN,
 +-inf, the type's extremes, empty, huge and unicode strings, near-misses of the accepted words) and checks
@@ -8,44 +9,32 @@ documented refusal (success False, a "Request failed" message, or a ServiceExcep
 call must answer within REPLY_BUDGET_S wall seconds plus, for a valid motion, its duration in sim time.
 
 Valid motions are kept short so that the module runs in a few minutes on two cores: valid durations are 1-2 s
-(the refusal path still gets the whole int32 range), /move_service's 5 s drive is drawn about one time in
-fifty, and valid approaches are fast ones from the spawn pose (the slow ones have their own test).
-Afterwards every node is the same process, still offers its services, printed no traceback, and answers a
+(the refusal path still gets the whole int32 range) and /move_service's 5 s drive is drawn about one time in
+fifty. Afterwards every node is the same process, still offers its services, printed no traceback, and answers a
 valid request correctly, measured on /odom and /scan where the request moves the robot.
 """
 import math
-import signal
 
-import numpy
 import pytest
 import rospy
 from custom_interfaces.srv import Move, MyCustomServiceMessage, StringServiceMessage
-from gazebo_msgs.srv import GetWorldProperties
 from hypothesis import given
 from hypothesis import strategies as st
 from services_quiz_srv.srv import Turn
 from std_srvs.srv import Empty
 from std_srvs.srv import SetBool as StdSetBool
-from tuos_msgs.srv import Approach, SetBool, TimedMovement
+from tuos_msgs.srv import SetBool, TimedMovement
 
 from beginner_tutorials.srv import add_two_int, gazebo_server
-from roslab import wait_for_param, wait_for_service, wait_for_topic
-from roslab.fuzz import FUZZ_SETTINGS, MIN_REQUESTS, GraphWatch, ServiceFuzzer
-from roslab.fuzz_strategies import float32s, float64s, signed_ints, texts
-from roslab.robot_view import RobotView, front_distance, pose_of
+from roslab.fuzz import FUZZ_SETTINGS, ServiceFuzzer
+from roslab.fuzz_strategies import signed_ints, texts
 
-REAL_TIME_FACTOR = 10
-# The fruit detector takes every camera frame: a small camera keeps the simulator at its real-time factor.
-SMALL_CAMERA = ("camera_width:=160", "camera_height:=120")
+from .fuzz_graph import MAX_LINEAR_MPS, report, reset_around, running_graph, speeds
+
 INT64 = (-2 ** 63, 2 ** 63 - 1)
-MAX_LINEAR_MPS, MAX_ANGULAR_RADPS, MAX_MOTION_S = 0.26, 1.82, 60
-APPROACH_DISTANCES_M = (0.2, 3.5)        # [min, max)
-FAST_APPROACH_MPS = 0.2                  # valid approaches in the fuzz are at least this fast
+MAX_ANGULAR_RADPS, MAX_MOTION_S = 1.82, 60
 STOP_LATENCY_SIM_S = 0.3                 # 30 ms of wall-clock latency in stopping is 0.3 s of sim time at 10x
-SAFETY_TRAVEL_M, STILL_TIMEOUT_S = 3.5, 2.0
-APPROACH_TIME_LIMIT_S = 60               # approach_server.py gives up after this much sim time
-SERVERS = [  # (package, executable, node, service, extra arguments)
-    ("course_sim_services", "moving_stop_services.py", "/moving_stop_services", "/stop", ()),
+SERVERS = [  # (package, executable, node, service, extra arguments), besides the Week 4 servers and /stop
     ("exercise42_pkg", "moving_right_server.py", "/moving_right_server", "/moving_right", ()),
     ("movement_pkg", "movement_server.py", "/movement_server", "/movement", ()),
     ("movement_pkg", "move_server.py", "/move_server", "/move", ()),
@@ -56,85 +45,18 @@ SERVERS = [  # (package, executable, node, service, extra arguments)
      ("add_two_int:=/cpp/add_two_int",)),
     ("beginner_tutorials", "scan_server.py", "/scan_server", "/my_service", ()),
 ]
-WEEK4 = {"/gazebo": "/gazebo/reset_world", "/move_service_server": "/move_service",
-         "/timed_move_service_server": "/timed_move_service", "/approach_service_server": "/approach_service"}
-
-
-class Graph:
-    """tb3_sim and the Week 4 servers (week4_demo.launch), every other server by rosrun, a RobotView."""
-
-    def __init__(self, ros_master):
-        self.processes = processes = [ros_master.roslaunch("week4_services", "week4_demo.launch", "gui:=false",
-                                          "real_time_factor:={}".format(REAL_TIME_FACTOR), *SMALL_CAMERA)]
-        wait_for_param(ros_master.uri, "/use_sim_time")   # before the rosrun servers read it
-        processes += [ros_master.rosrun(package, executable, *args) for package, executable, _, _, args in SERVERS]
-        services = list(WEEK4.values()) + [service for *_, service, _ in SERVERS] + ["/moving"]
-        for service in services:
-            wait_for_service(ros_master.uri, service, timeout_s=60)
-        wait_for_topic(ros_master.uri, "/scan")
-        self.probe = RobotView(ros_master.probe()).probe
-        nodes = list(WEEK4) + [node for _, _, node, _, _ in SERVERS]
-        self.watch = GraphWatch(ros_master.uri, nodes, services, processes)
-
-    def stop(self):
-        """End every node at once (each takes about a second to shut down after Ctrl-C)."""
-        for process in self.processes:
-            process.signal(signal.SIGINT)
-        for process in self.processes:
-            process.stop()
-
-    def reset(self):
-        """The robot stopped and back at the origin facing the box, with a LiDAR sweep taken there."""
-        rospy.ServiceProxy("/stop", Empty)()
-        rospy.ServiceProxy("/gazebo/reset_world", Empty)()
-        self.fresh("/scan")
-
-    def fresh(self, topic, predicate=lambda msg: True, delay_s=0.0):
-        """The first message on `topic` stamped at least `delay_s` sim seconds after now that satisfies
-        `predicate`. Stamps, not arrival order, say what is new: at REAL_TIME_FACTOR the probe may be
-        behind the simulator by a few sim seconds."""
-        after_s = self.sim_time() + delay_s
-        return self.probe.wait_for_message(
-            topic, predicate=lambda msg: msg["header"]["stamp"] >= after_s and predicate(msg), interval_s=0.02)
-
-    def sim_time(self):
-        return rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)().sim_time
-
-    def pose(self):
-        return pose_of(self.fresh("/odom"))
-
-    def settled_pose(self):
-        """The pose once /odom reports the robot has stopped."""
-        def still(odom):
-            twist = odom["twist"]["twist"]
-            return abs(twist["linear"]["x"]) < 1e-3 and abs(twist["angular"]["z"]) < 1e-3
-        return pose_of(self.fresh("/odom", still))
-
-    def velocity(self):
-        """(linear, angular) from /odom 2 s of sim time from now, once the wheels have ramped."""
-        twist = self.fresh("/odom", delay_s=2.0)["twist"]["twist"]
-        return twist["linear"]["x"], twist["angular"]["z"]
-
-    def front_distance(self):
-        return front_distance(self.fresh("/scan"))
 
 
 @pytest.fixture(scope="module")
 def graph(ros_master):
-    graph = Graph(ros_master)
-    try:
+    with running_graph(ros_master, SERVERS) as graph:
         yield graph
-        graph.watch.assert_alive()
-    finally:
-        graph.stop()
 
 
 @pytest.fixture
 def robot(graph):
-    graph.reset()
-    yield graph
-    graph.watch.assert_alive()
-    graph.reset()
+    with reset_around(graph) as robot:
+        yield robot
 
 
 def durations(valid_max_s=2):
@@ -142,19 +64,9 @@ def durations(valid_max_s=2):
     return st.one_of(signed_ints(32).filter(lambda s: not 1 <= s <= MAX_MOTION_S), st.integers(1, valid_max_s))
 
 
-def speeds(limit):
-    """float64 speeds: anything, or a valid one in (0, limit]."""
-    return st.one_of(float64s(), st.floats(0.05, limit))
-
-
 def rare_true():
     """True about one time in fifty (hypothesis draws index-uniformly, derandomized)."""
     return st.sampled_from([False] * 25 + [True] + [False] * 24)
-
-
-def report(fuzzer):
-    print("fuzzed {}: {} requests".format(fuzzer.name, fuzzer.calls))
-    assert fuzzer.calls >= MIN_REQUESTS
 
 
 def overshoot(speed):
@@ -205,55 +117,6 @@ def test_timed_move_service_fuzzed(robot):
     before = robot.pose()
     assert rospy.ServiceProxy("/timed_move_service", TimedMovement)("fwd", 2).success is True
     assert robot.settled_pose()[0] - before[0] == pytest.approx(0.2, abs=overshoot(0.1))
-
-
-def valid_approach(distance, velocity):
-    return (math.isfinite(distance) and APPROACH_DISTANCES_M[0] <= distance < APPROACH_DISTANCES_M[1]
-            and math.isfinite(velocity) and 0.0 < velocity <= MAX_LINEAR_MPS)
-
-
-def approaches():
-    """(approach_distance float32, approach_velocity float64): anything, minus valid slow approaches."""
-    shortest, longest = (float(numpy.float32(limit)) for limit in APPROACH_DISTANCES_M)
-    distances = st.one_of(float32s(), st.floats(shortest, longest, width=32, exclude_max=True))
-    return st.tuples(distances, speeds(MAX_LINEAR_MPS)).filter(
-        lambda request: not valid_approach(*request) or request[1] >= FAST_APPROACH_MPS)
-
-
-@pytest.mark.realtime   # the last approach's stopping distance depends on the server's loop running on time
-def test_approach_service_fuzzed(robot):
-    """A valid request drives to the box (or does not move when already close); any other one is refused
-    with "Request failed: <field> ..."."""
-    fuzzer = ServiceFuzzer("/approach_service", Approach)
-
-    @FUZZ_SETTINGS
-    @given(request=approaches())
-    def approach(request):
-        valid = valid_approach(*request)
-        if valid:
-            robot.reset()
-        budget_s = SAFETY_TRAVEL_M / request[1] + STILL_TIMEOUT_S if valid else 0.0
-        message = fuzzer.call(*request, motion_s=budget_s).response.response_message
-        assert message.startswith(("Stopped:", "Did not move:") if valid else "Request failed: approach_"), \
-            (request, message)
-
-    approach()
-    report(fuzzer)
-    robot.reset()
-    message = rospy.ServiceProxy("/approach_service", Approach)(0.4, 0.1).response_message
-    assert message.startswith("Stopped:")
-    assert robot.front_distance() == pytest.approx(0.4, abs=0.04)
-
-
-def test_approach_at_a_crawl_stops_at_the_time_limit(robot):
-    """A valid but absurd velocity (1 um/s: the 1.3 m to the box would take two weeks) must not hold the
-    server: it gives up after APPROACH_TIME_LIMIT_S of sim time, stops, and says so."""
-    fuzzer = ServiceFuzzer("/approach_service", Approach)
-    reply = fuzzer.call(0.4, 1e-6, motion_s=APPROACH_TIME_LIMIT_S + STILL_TIMEOUT_S)
-    assert reply.response.response_message.startswith(
-        "Stopped after the {} s time limit: the closest object ahead is 1.".format(APPROACH_TIME_LIMIT_S))
-    assert rospy.ServiceProxy("/approach_service", Approach)(3.0, 0.1).response_message.startswith(
-        "Did not move")
 
 
 # --- the ROS 2 Services unit ports -----------------------------------------------------------------------

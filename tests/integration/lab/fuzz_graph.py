@@ -1,0 +1,114 @@
+"""The fuzzed graph of the course's service servers (test_fuzz_services.py, test_fuzz_approach.py): one tb3_sim in
+the approach arena at REAL_TIME_FACTOR with the Week 4 servers, and whichever other servers a module fuzzes."""
+import contextlib
+import signal
+
+import rospy
+from gazebo_msgs.srv import GetWorldProperties
+from hypothesis import strategies as st
+from std_srvs.srv import Empty
+
+from roslab import wait_for_param, wait_for_service, wait_for_topic
+from roslab.fuzz import MIN_REQUESTS, GraphWatch
+from roslab.fuzz_strategies import float64s
+from roslab.robot_view import RobotView, front_distance, pose_of
+
+REAL_TIME_FACTOR = 10
+# The fruit detector takes every camera frame: a small camera keeps the simulator at its real-time factor.
+SMALL_CAMERA = ("camera_width:=160", "camera_height:=120")
+MAX_LINEAR_MPS = 0.26
+# (package, executable, node, service, extra arguments)
+STOP_SERVER = ("course_sim_services", "moving_stop_services.py", "/moving_stop_services", "/stop", ())
+WEEK4 = {"/gazebo": "/gazebo/reset_world", "/move_service_server": "/move_service",
+         "/timed_move_service_server": "/timed_move_service", "/approach_service_server": "/approach_service"}
+
+
+class Graph:
+    """tb3_sim and the Week 4 servers (week4_demo.launch), the course's /moving and /stop (needed to reset the
+    robot) and `servers` by rosrun, a RobotView."""
+
+    def __init__(self, ros_master, servers=()):
+        servers = [STOP_SERVER, *servers]
+        self.processes = processes = [ros_master.roslaunch("week4_services", "week4_demo.launch", "gui:=false",
+                                          "real_time_factor:={}".format(REAL_TIME_FACTOR), *SMALL_CAMERA)]
+        wait_for_param(ros_master.uri, "/use_sim_time")   # before the rosrun servers read it
+        processes += [ros_master.rosrun(package, executable, *args) for package, executable, _, _, args in servers]
+        services = list(WEEK4.values()) + [service for *_, service, _ in servers] + ["/moving"]
+        for service in services:
+            wait_for_service(ros_master.uri, service, timeout_s=60)
+        wait_for_topic(ros_master.uri, "/scan")
+        self.probe = RobotView(ros_master.probe()).probe
+        nodes = list(WEEK4) + [node for _, _, node, _, _ in servers]
+        self.watch = GraphWatch(ros_master.uri, nodes, services, processes)
+
+    def stop(self):
+        """End every node at once (each takes about a second to shut down after Ctrl-C)."""
+        for process in self.processes:
+            process.signal(signal.SIGINT)
+        for process in self.processes:
+            process.stop()
+
+    def reset(self):
+        """The robot stopped and back at the origin facing the box, with a LiDAR sweep taken there."""
+        rospy.ServiceProxy("/stop", Empty)()
+        rospy.ServiceProxy("/gazebo/reset_world", Empty)()
+        self.fresh("/scan")
+
+    def fresh(self, topic, predicate=lambda msg: True, delay_s=0.0):
+        """The first message on `topic` stamped at least `delay_s` sim seconds after now that satisfies
+        `predicate`. Stamps, not arrival order, say what is new: at REAL_TIME_FACTOR the probe may be
+        behind the simulator by a few sim seconds."""
+        after_s = self.sim_time() + delay_s
+        return self.probe.wait_for_message(
+            topic, predicate=lambda msg: msg["header"]["stamp"] >= after_s and predicate(msg), interval_s=0.02)
+
+    def sim_time(self):
+        return rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)().sim_time
+
+    def pose(self):
+        return pose_of(self.fresh("/odom"))
+
+    def settled_pose(self):
+        """The pose once /odom reports the robot has stopped."""
+        def still(odom):
+            twist = odom["twist"]["twist"]
+            return abs(twist["linear"]["x"]) < 1e-3 and abs(twist["angular"]["z"]) < 1e-3
+        return pose_of(self.fresh("/odom", still))
+
+    def velocity(self):
+        """(linear, angular) from /odom 2 s of sim time from now, once the wheels have ramped."""
+        twist = self.fresh("/odom", delay_s=2.0)["twist"]["twist"]
+        return twist["linear"]["x"], twist["angular"]["z"]
+
+    def front_distance(self):
+        return front_distance(self.fresh("/scan"))
+
+
+@contextlib.contextmanager
+def running_graph(ros_master, servers=()):
+    """A Graph for a test module: every node must still be alive when the module is done; then all are ended."""
+    graph = Graph(ros_master, servers)
+    try:
+        yield graph
+        graph.watch.assert_alive()
+    finally:
+        graph.stop()
+
+
+@contextlib.contextmanager
+def reset_around(graph):
+    """The graph for one test: the robot reset before and after, every node alive after."""
+    graph.reset()
+    yield graph
+    graph.watch.assert_alive()
+    graph.reset()
+
+
+def speeds(limit):
+    """float64 speeds: anything, or a valid one in (0, limit]."""
+    return st.one_of(float64s(), st.floats(0.05, limit))
+
+
+def report(fuzzer):
+    print("fuzzed {}: {} requests".format(fuzzer.name, fuzzer.calls))
+    assert fuzzer.calls >= MIN_REQUESTS
