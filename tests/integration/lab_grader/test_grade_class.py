@@ -17,9 +17,6 @@ from .sample_submissions import make_submission
 GRADE_TIMEOUT_S = 900
 CLASS = ("reference", "wrong_direction", "old_message_package", "does_not_build", "student_style", "wrong_duration",
          "never_stops", "ignores_invalid_input", "bare_values", "own_service_names", "python2_syntax")
-# The suite's own factor (1): a student's node that waits for the CPU on a loaded machine (scripts/test runs these
-# tests beside others, in an idle CPU group) overruns a timed move by that wait, in sim time, times the factor.
-REAL_TIME_FACTOR = 1
 TIMED_MOVES = {"timed_fwd": 2, "timed_back": 2, "timed_left": 3, "timed_right": 3}   # check: seconds requested
 INVALID_TIMED_MOVES = ("timed_invalid_word", "timed_zero_duration", "timed_negative_duration")
 
@@ -61,7 +58,7 @@ def graded(env, tmp_path_factory):
     for name in CLASS:
         make_submission(name, folder)
     out = tmp_path_factory.mktemp("grades")
-    output = grade(env, folder, "--suite", "week4", "--out", out, "--jobs", "2", "--rtf", str(REAL_TIME_FACTOR))
+    output = grade(env, folder, "--suite", "week4", "--out", out, "--jobs", "2", "--rtf", "2")
     return out, output
 
 
@@ -210,8 +207,7 @@ def test_a_rerun_gives_identical_scores_and_verdicts(env, graded, tmp_path):
     again = ("wrong_direction", "wrong_duration")
     for name in again:
         make_submission(name, tmp_path / "class")
-    grade(env, tmp_path / "class", "--suite", "week4", "--out", tmp_path / "again", "--jobs", "2",
-          "--rtf", str(REAL_TIME_FACTOR))
+    grade(env, tmp_path / "class", "--suite", "week4", "--out", tmp_path / "again", "--jobs", "2", "--rtf", "2")
     first, second = results(graded[0]), results(tmp_path / "again")
     for name in again:
         assert (second[name]["score"], verdicts(second[name])) == (first[name]["score"], verdicts(first[name]))
