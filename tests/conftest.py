@@ -30,7 +30,8 @@ def pytest_configure(config):
 
 
 def recorded_wall_s(log=REPO_ROOT / "bench-output" / "module_cost.jsonl"):
-    """{test file path: wall seconds} from the last whole scripts/test run (see _module_cost), or {} before one."""
+    """{test file path: wall seconds} from the last whole scripts/test run (see _module_cost; a file with tests in
+    both parts is counted once per part), or {} before one."""
     try:
         lines = Path(log).read_text().splitlines()
     except OSError:
@@ -39,7 +40,8 @@ def recorded_wall_s(log=REPO_ROOT / "bench-output" / "module_cost.jsonl"):
     for line in lines:
         try:
             cost = json.loads(line)
-            walls[REPO_ROOT / cost["module"]] = walls.get(REPO_ROOT / cost["module"], 0.0) + float(cost["wall_s"])
+            path = REPO_ROOT / cost["module"]
+            walls[path] = walls.get(path, 0.0) + float(cost["wall_s"])
         except (ValueError, KeyError, TypeError):
             continue
     return walls
