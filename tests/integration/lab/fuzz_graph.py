@@ -14,7 +14,8 @@ from roslab.fuzz_strategies import float64s
 from roslab.robot_view import RobotView, front_distance, pose_of
 
 REAL_TIME_FACTOR = 10
-# The fruit detector takes every camera frame: a small camera keeps the simulator at its real-time factor.
+# A module that starts the fruit detector has it take every camera frame: a small camera keeps the simulator at
+# its real-time factor (with no subscriber, the camera renders nothing).
 SMALL_CAMERA = ("camera_width:=160", "camera_height:=120")
 MAX_LINEAR_MPS = 0.26
 # (package, executable, node, service, extra arguments)
