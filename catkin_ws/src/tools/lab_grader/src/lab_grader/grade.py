@@ -3,9 +3,11 @@
 The order is a marker's: copy the package into a fresh catkin workspace, `chmod +x` its Python files (as the course
 tells students to), build it with catkin_make on top of the lab, start roscore and, when the suite has a world,
 tb3_sim (trusted, in the box's own loopback-only network), start the student's nodes the way the course says
-(`rosrun <package> <file>`), then run the suite's checks (`rosrun lab_grader run_checks`, trusted) and read their
-JSON. A build that fails, a node that is missing or dies, a check runner that overruns: each is recorded with its
-evidence (the tail of the log) and the submission gets the checks' verdicts as far as they got; the batch goes on.
+(`rosrun <package> <file>`), then run the suite's checks (what `rosrun lab_grader run_checks` runs, as
+`python3 -m lab_grader.checks.runner`: trusted, so rosrun's package search, four catkin_find runs, is not needed)
+and read their JSON. A build that fails, a node that is missing or dies, a check runner that overruns: each is
+recorded with its evidence (the tail of the log) and the submission gets the checks' verdicts as far as they got;
+the batch goes on.
 
 Logs are written by the grader outside the student's workspace, under the submission's output folder.
 """
@@ -161,7 +163,7 @@ class SubmissionGrader:
         # No pause for the nodes to start: the check runner waits for each service itself (the suite's wait_s).
         checks_log = out_dir / "checks.log"
         on_stage("checks", checks_log)
-        run = box.run_trusted(["rosrun", "lab_grader", "run_checks", "--suite", str(self.suite.path),
+        run = box.run_trusted(["python3", "-m", "lab_grader.checks.runner", "--suite", str(self.suite.path),
                                "--out", str(out_dir / CHECKS_FILE)], self.env, checks_log, timeout_s=CHECKS_TIMEOUT_S)
         for entry in nodes:
             if isinstance(entry, NodeStart):

@@ -150,3 +150,7 @@ def main(argv=None):
             context.shutdown()
     print("score {}/{} -> {}".format(document["score"], document["max_score"], args.out), flush=True)
     return 0
+
+
+if __name__ == "__main__":   # the grader runs it so, without rosrun's package search
+    sys.exit(main())
