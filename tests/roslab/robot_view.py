@@ -50,7 +50,10 @@ class RobotView:
         self.probe.take("/odom")
         return pose_of(self.probe.wait_for_message("/odom", timeout_s, predicate=stopped))
 
-    def front_distance(self, timeout_s=20.0):
-        """LiDAR distance straight ahead from the next full sweep."""
+    def front_distance(self, timeout_s=20.0, sweeps=1):
+        """LiDAR distance straight ahead: the median over the next `sweeps` full sweeps. For a robot standing
+        still, more sweeps average out the LiDAR's noise (sigma 0.01 m: one sweep's 7-beam median reads with
+        a spread of about 4.5 mm, 5 sweeps' about 2 mm)."""
         self.probe.take("/scan")
-        return front_distance(self.probe.wait_for_message("/scan", timeout_s))
+        return statistics.median([front_distance(self.probe.wait_for_message("/scan", timeout_s))
+                                  for _ in range(sweeps)])

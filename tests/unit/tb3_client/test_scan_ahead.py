@@ -1,5 +1,7 @@
 """The /scan helper: closest object ahead on Gazebo's TurtleBot3 LiDAR layout (index 0 ahead, CCW)."""
 import math
+import random
+import statistics
 
 import pytest
 
@@ -64,3 +66,20 @@ def test_real_driver_layout_with_negative_angle_min():
     found = closest_ahead(ranges, -math.pi, increment, 0.12)
     assert found.distance == pytest.approx(0.7)
     assert abs(found.angle_deg) < 1.5
+
+
+def test_gazebo_noise_on_a_wall_ahead_biases_the_distance_by_less_than_5_mm():
+    """The stopping distance of the approach servers is this reading: a flat wall 0.4 m ahead, sigma 0.01 m."""
+    rng = random.Random(1)
+    increment = 2 * math.pi / 360
+    readings = []
+    for _ in range(400):
+        ranges = [0.4 / math.cos(i * increment) + rng.gauss(0.0, 0.01) if math.cos(i * increment) > 0.3 else INF
+                  for i in range(360)]
+        readings.append(closest_ahead(ranges, 0.0, increment, 0.12).distance)
+    assert statistics.mean(readings) == pytest.approx(0.4, abs=0.005)
+
+
+def test_an_object_a_few_beams_wide_before_a_farther_wall_is_seen():
+    ranges = scan(fill=2.0, **{"i358": 0.6, "i359": 0.6, "i0": 0.6, "i1": 0.6, "i2": 0.6})
+    assert closest_ahead(ranges, 0.0, INCREMENT, 0.12).distance == pytest.approx(0.6)

@@ -8,6 +8,7 @@ import contextlib
 import math
 import threading
 import time
+from typing import NamedTuple
 
 import rospy
 from geometry_msgs.msg import Twist
@@ -22,6 +23,25 @@ FIRST_MESSAGE_GRACE_S = 5.0   # a request right after start-up waits this long f
 WAIT_SLICE_WALL_S = 0.01
 STILL_SPEED_MPS = 0.002
 STILL_TIMEOUT_S = 2.0
+
+
+class Reading(NamedTuple):
+    """The latest /odom and /scan, taken together, and the number of sweeps received so far."""
+
+    odom: Odometry
+    scan: LaserScan
+    scan_count: int
+
+
+def travelled_between(start, odom):
+    """Straight-line distance (m) between the positions of two odometry messages."""
+    here, there = odom.pose.pose.position, start.pose.pose.position
+    return math.hypot(here.x - there.x, here.y - there.y)
+
+
+def object_ahead_in(scan):
+    """The closest object within the arc ahead in the sweep `scan` (scan_ahead.ObjectAhead), or None."""
+    return closest_ahead(scan.ranges, scan.angle_min, scan.angle_increment, scan.range_min)
 
 
 class RobotError(RuntimeError):
@@ -147,10 +167,11 @@ class Robot:
             self._changed.wait(WAIT_SLICE_WALL_S)
         self._check_alive(need_scan)
 
-    def travelled_from(self, start):
-        """Straight-line distance (m) of the current /odom position from the odometry message `start`."""
-        here, there = self.odom.pose.pose.position, start.pose.pose.position
-        return math.hypot(here.x - there.x, here.y - there.y)
+    def latest(self):
+        """The latest /odom and /scan as one Reading: both read at once, so a callback between them cannot
+        pair a sweep with odometry from a different moment than the caller thinks."""
+        with self._changed:
+            return Reading(self.odom, self.scan, self.scan_count)
 
     def forward_speed(self):
         """Forward speed (m/s) in the body frame, from the latest /odom."""
@@ -158,8 +179,7 @@ class Robot:
 
     def object_ahead(self):
         """The closest object within the arc ahead in the latest sweep (scan_ahead.ObjectAhead), or None."""
-        scan = self.scan
-        return closest_ahead(scan.ranges, scan.angle_min, scan.angle_increment, scan.range_min)
+        return object_ahead_in(self.scan)
 
     def wait_until_still(self):
         """After a stop: wait (rospy time, at most STILL_TIMEOUT_S) until /odom reports it has stopped."""
