@@ -43,7 +43,7 @@ def demo_processes(ros_master):
     for service in ["/approach_service", "/add_two_int", "/spawn", "/gazebo/reset_world"]:
         wait_for_service(ros_master.uri, service, timeout_s=60)
     wait_for_topic(ros_master.uri, "/scan")
-    return with_descendants({process.pid for process in started + [ros_master.core]})
+    return with_descendants({process.pid for process in started + ros_master.core})
 
 
 def test_every_listening_socket_is_on_loopback(demo_processes):
