@@ -63,9 +63,9 @@ def pytest_collection_modifyitems(config, items):
 
 @pytest.fixture(scope="module")
 def ros_master(tmp_path_factory):
-    """A private roscore on a free port for this test module; every process started through it is ended
-    when the module's tests are done. The test process's own ROS_MASTER_URI points at it too, so
-    rospy.ServiceProxy calls (which need no init_node) reach it."""
+    """A private master (rosmaster and rosout, see roslab.master) on a free port for this test module; every
+    process started through it is ended when the module's tests are done. The test process's own ROS_MASTER_URI
+    points at it too, so rospy.ServiceProxy calls (which need no init_node) reach it."""
     with private_master(tmp_path_factory.mktemp("ros")) as master:
         yield master
 
@@ -83,7 +83,7 @@ def probe(ros_master):
 
 
 def _cpu_seconds():
-    """CPU seconds (user + system) of this process and of every child it has reaped (roscore, nodes, and their
+    """CPU seconds (user + system) of this process and of every child it has reaped (the master, nodes, and their
     own reaped children)."""
     own, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
     return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime

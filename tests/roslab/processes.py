@@ -1,4 +1,4 @@
-"""A process of the ROS graph started by a test (roscore, rosrun, roslaunch, a CLI tool), always ended.
+"""A process of the ROS graph started by a test (rosmaster, rosrun, roslaunch, a CLI tool), always ended.
 
 Each process runs in its own session (process group) so that ending it also ends everything roslaunch or
 rosrun started under it. Output goes to a log file that failing tests can show.
