@@ -21,8 +21,6 @@ from roslab.fuzz_strategies import float32s
 
 from .fuzz_graph import MAX_LINEAR_MPS, report, reset_around, running_graph, speeds
 
-pytestmark = pytest.mark.keeps_pace   # the crawl's stop at its sim-time limit, at 10x
-
 APPROACH_DISTANCES_M = (0.2, 3.5)        # [min, max)
 FAST_APPROACH_MPS = 0.2                  # valid approaches in the fuzz are at least this fast
 SAFETY_TRAVEL_M, STILL_TIMEOUT_S = 3.5, 2.0

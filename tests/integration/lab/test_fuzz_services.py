@@ -31,8 +31,6 @@ from roslab.fuzz_strategies import signed_ints, texts
 
 from .fuzz_graph import MAX_LINEAR_MPS, report, reset_around, running_graph, speeds
 
-pytestmark = pytest.mark.keeps_pace   # the servers' stops at 10x are measured in sim time
-
 INT64 = (-2 ** 63, 2 ** 63 - 1)
 MAX_ANGULAR_RADPS, MAX_MOTION_S = 1.82, 60
 STOP_LATENCY_SIM_S = 0.3                 # 30 ms of wall-clock latency in stopping is 0.3 s of sim time at 10x

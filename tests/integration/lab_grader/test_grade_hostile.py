@@ -24,8 +24,6 @@ from .hostile_code import CHILDREN, REPORT_PREFIX, SLEEP_SECONDS
 from .sample_submissions import make_submission
 from .test_grade_class import check, grade, results
 
-pytestmark = pytest.mark.keeps_pace   # the neighbour's checks run at 2x beside the attacks
-
 SANDBOX_UIDS = range(STUDENT_UID_BASE, STUDENT_UID_BASE + GRADER_SLOTS)
 HOSTILE = ("forks_children", "reaches_network", "snoops", "prints_megabytes", "hangs_in_the_callback", "busy_waits")
 NEIGHBOUR = "victim"        # sorts after "snoops": the two are graded at about the same time

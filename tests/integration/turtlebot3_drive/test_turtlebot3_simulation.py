@@ -17,8 +17,6 @@ from roslab import RosProcess, wait_for_param, wait_for_service, wait_for_topic,
 from tb3_sim.core.shapes import Circle, Polygon, Segment
 from tb3_sim.core.world_file import load_world, shipped_world_path
 
-pytestmark = pytest.mark.keeps_pace   # the wandering node must see each scan at 10x
-
 ROBOT = "turtlebot3_waffle"
 WANDER_REAL_TIME_FACTOR = 10
 WANDER_SIM_S = 120.0

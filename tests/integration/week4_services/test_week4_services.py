@@ -13,8 +13,6 @@ from roslab import wait_for_service
 from roslab.calls import BackgroundCall
 from roslab.robot_view import RobotView, angle_between, pose_of
 
-pytestmark = pytest.mark.keeps_pace   # the servers' stops at 3x are measured in sim time
-
 REAL_TIME_FACTOR = "3"
 STILL_M = 0.002
 STILL_SWEEPS = 5   # the stopped robot's distance to the box, as the median of this many LiDAR sweeps
