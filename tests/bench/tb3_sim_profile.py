@@ -46,7 +46,7 @@ SHARES = [
      or "core/pacing.py" in path),
     ("output loop (steps, what is due, who subscribes)",
      lambda path, name: any(part in path for part in ("ros/outputs/publisher.py", "ros/publishers.py",
-                                                      "core/schedule.py", "ros/node.py", "ros/stop_request.py"))
+                                                      "core/schedule.py", "ros/node.py"))
      or any(word in name for word in ("builtins.min", "'extend'", "'append'", "builtins.len"))),
 ]
 

@@ -1,6 +1,6 @@
 """Ctrl-C and SIGTERM stop tb3_sim promptly, with no traceback, also when they arrive as subscribers vanish (the
-moment roslaunch stops everything after a client node exits). The simulator handles both signals itself (see
-tb3_sim.ros.stop_request): rospy's own handler once deadlocked there, too rarely to reproduce on demand, so this
+moment roslaunch stops everything after a client node exits). The simulator handles both signals itself (see the
+stop_request package): rospy's own handler once deadlocked there, too rarely to reproduce on demand, so this
 checks the replacement: each round runs the simulator unpaced, kills `rostopic echo` on /clock and /odom, and
 sends the signal a few milliseconds later."""
 import signal

@@ -10,15 +10,19 @@ Node name `turtlebot3_drive` (turtlebot3_simulation.launch names it `$(arg name)
   runs faster or slower than real time) it makes one decision with the latest readings and publishes what the
   ObstacleAvoider returns. Nothing is decided before the first scan and odometry have arrived.
 - A scan with too few beams is reported (at most every 10 s) and the robot is stopped until a usable one comes.
-- On shutdown (Ctrl-C, or roslaunch ending it) it publishes one zero Twist, so the robot stops.
+- Ctrl-C or SIGTERM (roslaunch ending it), `rosnode kill` or any other shutdown: it publishes one zero Twist
+  as its last command, so the robot stops, and gives it time to reach the robot before rospy tears the node
+  down (tb3_client.commands). The signals are handled by stop_request, from a thread of their own: the
+  loop publishes hundreds of times per wall second, and rospy's handler, publishing on top of it, deadlocked.
 The control loop survives /gazebo/reset_simulation (ROS time going back).
 """
 import rosgraph.names
 import rospy
-from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
 
+from stop_request import StopRequest
+from tb3_client.commands import CommandPublisher
 from turtlebot3_gazebo.obstacle_avoider import (
     CONTROL_RATE_HZ,
     STOP,
@@ -43,10 +47,10 @@ class DriveNode:
         self._ranges = None
         self._heading = None
         self._last_command = None
-        self._cmd_vel = rospy.Publisher(cmd_vel_topic, Twist, queue_size=QUEUE_SIZE)
+        self._cmd_vel = CommandPublisher(cmd_vel_topic, queue_size=QUEUE_SIZE)
         self._scan_sub = rospy.Subscriber("scan", LaserScan, self._on_scan, queue_size=QUEUE_SIZE)
         self._odom_sub = rospy.Subscriber("odom", Odometry, self._on_odom, queue_size=QUEUE_SIZE)
-        rospy.on_shutdown(self.stop)
+        rospy.on_shutdown(self.stop_for_good)
 
     def _on_scan(self, scan):
         try:
@@ -71,15 +75,14 @@ class DriveNode:
         if command is not None:
             self._publish(command)
 
-    def stop(self):
-        """Publish a zero Twist."""
-        self._publish(STOP)
+    def stop_for_good(self):
+        """Publish a zero Twist as the node's last command (the signal's thread and rospy's shutdown hook may
+        both call it)."""
+        self._cmd_vel.stop_for_good()
 
     def _publish(self, command):
-        twist = Twist()
-        twist.linear.x, twist.angular.z = command
-        self._cmd_vel.publish(twist)
-        self._last_command = command
+        if self._cmd_vel.publish(*command):
+            self._last_command = command
 
 
 def cmd_vel_topic(value):
@@ -90,9 +93,18 @@ def cmd_vel_topic(value):
     return value
 
 
+def shut_down(node):
+    """Ctrl-C or SIGTERM: the robot stops, then rospy shuts down (which ends the loop)."""
+    node.stop_for_good()
+    rospy.signal_shutdown("stop requested")
+
+
 def main():
     """Run the node until shutdown; returns the exit code."""
-    rospy.init_node(NODE_NAME)
+    try:
+        rospy.init_node(NODE_NAME, disable_signals=True)   # waits for the master, if need be
+    except KeyboardInterrupt:
+        return 0   # Ctrl-C while waiting for the master: nothing has started yet
     try:
         topic = cmd_vel_topic(rospy.get_param(CMD_VEL_PARAM, DEFAULT_CMD_VEL_TOPIC))
     except DriveError as error:
@@ -100,6 +112,7 @@ def main():
         return 1
     rospy.loginfo("TurtleBot3 Simulation Node Init")
     node = DriveNode(topic)
+    StopRequest(on_stop=lambda: shut_down(node)).install()
     rate = rospy.Rate(CONTROL_RATE_HZ, reset=True)
     while not rospy.is_shutdown():
         node.tick()

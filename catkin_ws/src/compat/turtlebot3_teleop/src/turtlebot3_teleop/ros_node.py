@@ -15,14 +15,13 @@ also after stopping the robot and restoring the terminal. Without a terminal on 
 from something that is not a terminal) it prints one line saying so and exits with 1. Before the master
 answers, rospy waits for it (and says so); Ctrl-C then quits quietly.
 """
-import signal
 import sys
-import threading
-import time
 
 import rosgraph
 import rospy
-from geometry_msgs.msg import Twist
+
+from stop_request import StopRequest
+from tb3_client.commands import CommandPublisher
 
 from .key_terminal import KeyTerminal, NotATerminalError
 from .keyboard_teleop import (
@@ -40,40 +39,9 @@ MODEL_PARAM = "model"
 KEY_TIMEOUT_S = 0.1
 """How long one loop waits for a key [s, wall clock]."""
 
-FLUSH_WAIT_S = 0.3
-"""Wall time given to rospy's sender threads to deliver the final zero Twist before the node shuts down."""
-
 NOT_A_TERMINAL = ("turtlebot3_teleop_key: standard input is not a terminal, so there are no keys to read; run it "
                   "in a terminal window: rosrun turtlebot3_teleop turtlebot3_teleop_key (or roslaunch "
                   "turtlebot3_teleop turtlebot3_teleop_key.launch)")
-
-
-class StopRequest:
-    """A flag set by SIGINT or SIGTERM once `install()` has replaced their handlers; the loop checks it between
-    two keys, so the node stops from its own thread and can still publish its zero Twist."""
-
-    SIGNALS = (signal.SIGINT, signal.SIGTERM)
-
-    def __init__(self):
-        self._event = threading.Event()
-
-    def install(self):
-        for signum in self.SIGNALS:
-            signal.signal(signum, self._on_signal)
-
-    def _on_signal(self, _signum, _frame):
-        self._event.set()
-
-    def is_set(self):
-        return self._event.is_set()
-
-
-def twist(linear_mps, angular_radps):
-    """A Twist with only linear.x and angular.z set."""
-    message = Twist()
-    message.linear.x = linear_mps
-    message.angular.z = angular_radps
-    return message
 
 
 def read_model():
@@ -94,9 +62,7 @@ class TeleopKeyNode:
 
     def __init__(self, teleop):
         self._teleop = teleop
-        self._cmd_vel = rospy.Publisher("cmd_vel", Twist, queue_size=10)
-        self._lock = threading.Lock()
-        self._stopped = False
+        self._cmd_vel = CommandPublisher("cmd_vel", queue_size=10)
         rospy.on_shutdown(self.stop_robot)   # `rosnode kill` shuts rospy down from another thread
 
     def run(self, keys, stop):
@@ -110,25 +76,13 @@ class TeleopKeyNode:
                 return
             for line in self._teleop.press(key):
                 say(line)
-            if not self._send(*self._teleop.step()):
+            if not self._cmd_vel.publish(*self._teleop.step()):
                 return
-
-    def _send(self, linear_mps, angular_radps):
-        """Publish a command unless the robot has been stopped for good; returns whether it was published."""
-        with self._lock:
-            if not self._stopped:
-                self._cmd_vel.publish(twist(linear_mps, angular_radps))
-            return not self._stopped
 
     def stop_robot(self):
-        """Publish one zero Twist as the last command and give it time to leave; only the first call does
-        anything (the loop and rospy's shutdown hook may both call it)."""
-        with self._lock:
-            if self._stopped:
-                return
-            self._stopped = True
-            self._cmd_vel.publish(twist(0.0, 0.0))
-        time.sleep(FLUSH_WAIT_S)
+        """Publish one zero Twist as the last command and give it time to leave (the loop and rospy's shutdown
+        hook may both call it)."""
+        self._cmd_vel.stop_for_good()
 
 
 def main():

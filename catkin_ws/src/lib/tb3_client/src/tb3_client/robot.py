@@ -11,11 +11,11 @@ import time
 from typing import NamedTuple
 
 import rospy
-from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
 
 from master_reconnect import keep_registered
+from tb3_client.commands import CommandPublisher
 from tb3_client.scan_ahead import closest_ahead
 
 STALE_AFTER_WALL_S = 1.0      # no /odom (or /scan while one is needed) for this long: the robot is gone
@@ -62,7 +62,7 @@ class Robot:
     Creating it also keeps the node registered across a roscore restart (master_reconnect)."""
 
     def __init__(self):
-        self._cmd_vel = rospy.Publisher("cmd_vel", Twist, queue_size=1)
+        self._cmd_vel = CommandPublisher("cmd_vel", queue_size=1)
         self._changed = threading.Condition()
         self._busy = threading.Lock()
         self.odom = None
@@ -74,7 +74,7 @@ class Robot:
         self._restarts_at_start = None  # _restarts when the current request started (see exclusive)
         rospy.Subscriber("odom", Odometry, self._on_odom, queue_size=1)
         rospy.Subscriber("scan", LaserScan, self._on_scan, queue_size=1)
-        rospy.on_shutdown(self.stop)
+        rospy.on_shutdown(self._cmd_vel.stop_for_good)
         keep_registered()
 
     def _on_odom(self, msg):
@@ -91,10 +91,9 @@ class Robot:
             self._changed.notify_all()
 
     def drive(self, linear, angular):
-        """Publish one velocity command (m/s, rad/s); the robot holds it until the next one."""
-        twist = Twist()
-        twist.linear.x, twist.angular.z = linear, angular
-        self._cmd_vel.publish(twist)
+        """Publish one velocity command (m/s, rad/s); the robot holds it until the next one. Nothing once the
+        node is shutting down: its last command was a zero Twist."""
+        self._cmd_vel.publish(linear, angular)
 
     def stop(self):
         self.drive(0.0, 0.0)

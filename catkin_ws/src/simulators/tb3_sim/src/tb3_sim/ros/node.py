@@ -78,6 +78,7 @@ from std_srvs.srv import Empty, EmptyResponse
 from tf2_msgs.msg import TFMessage
 
 from master_reconnect import keep_registered
+from stop_request import StopRequest
 from tb3_sim.core.diff_drive import validate_command
 from tb3_sim.core.errors import BadRequestError, SimError
 from tb3_sim.core.geometry import Pose2D
@@ -94,7 +95,6 @@ from tb3_sim.ros.outputs import OutputPublisher, robot_outputs, world_outputs
 from tb3_sim.ros.outputs.scan import ScanOutput
 from tb3_sim.ros.publishers import output_publisher
 from tb3_sim.ros.robot_naming import spawned_robot_naming
-from tb3_sim.ros.stop_request import StopRequest
 from tb3_sim.view.scene import Trails, scene_of
 
 NODE_NAME = "gazebo"

@@ -28,7 +28,6 @@ Failures reach clients as roscpp's do: `responded with an error: b''` for the or
 `return false`, the exception text for roscpp's InvalidNameException.
 """
 import os
-import signal
 import threading
 import time
 
@@ -37,6 +36,7 @@ import rospy
 from std_srvs.srv import Empty, EmptyResponse
 
 from master_reconnect import keep_registered
+from stop_request import StopRequest
 from turtlesim.core.constants import BACKGROUND_PARAMS, DEFAULT_BACKGROUND, TICK_INTERVAL_MS
 from turtlesim.core.errors import InvalidNameError, TurtleSimError, UnknownTurtleError
 from turtlesim.core.simulation import TurtleSim
@@ -102,7 +102,7 @@ class TurtleSimNode:
         advertise turtle1's interfaces, then the global services (and ~snapshot if asked).
 
         Args:
-            stop: threading.Event; once set, `tick` returns False and `wait` returns True.
+            stop: a StopRequest; once set, `tick` returns False and `wait` returns True.
             snapshot_service: advertise ~snapshot too.
             publish_canvas: publish ~canvas/compressed too.
             rng: random.Random for the turtles' looks.
@@ -288,9 +288,8 @@ def window_wanted(headless):
 
 def main():
     """Run turtlesim_node until Ctrl-C, SIGTERM, rospy shutdown or the window closing."""
-    stop = threading.Event()
-    for signum in (signal.SIGINT, signal.SIGTERM):
-        signal.signal(signum, lambda *_: stop.set())
+    stop = StopRequest()
+    stop.install()
     rospy.init_node(NODE_NAME, disable_signals=True)
     use_roscpp_console()
     try:
