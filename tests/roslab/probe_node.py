@@ -6,7 +6,8 @@ Requests:  {"op": "subscribe", "topic": t, "type": "pkg/Msg"}            -> {"ok
                back without their `data` (its length instead), and the latest image, decoded by cv_bridge
                (imgmsg_to_cv2 or compressed_imgmsg_to_cv2), is saved as a numpy .npy file at `path`
            {"op": "take", "topic": t}  (and clears the buffer)           -> {"ok": true, "messages": [...]}
-           {"op": "publish", "topic": t, "type": "pkg/Msg", "msg": {...}, "wait_s": 5}  -> {"ok": true}
+           {"op": "publish", "topic": t, "type": "pkg/Msg", "msg": {...}, "wait_s": 5}
+                                                                         -> {"ok": true, "subscribers": n}
            {"op": "now"}                                                 -> {"ok": true, "now": ros seconds}
 Each message comes back as {"wall": time.time(), "ros": rospy time (sim time when /use_sim_time), "msg": dict}.
 Errors come back as {"ok": false, "error": text}.
@@ -20,6 +21,7 @@ import time
 
 import genpy
 import numpy
+import rosgraph
 import roslib.message
 import rospy
 
@@ -37,6 +39,13 @@ def to_plain(value):
     if isinstance(value, float) and not math.isfinite(value):
         return repr(value)
     return value
+
+
+def subscriber_count(topic):
+    """How many nodes other than this one the master lists as subscribers of `topic`."""
+    _, subscribers, _ = rosgraph.Master(rospy.get_name()).getSystemState()
+    nodes = next((nodes for name, nodes in subscribers if name == topic), [])
+    return len([node for node in nodes if node != rospy.get_name()])
 
 
 class Probe:
@@ -96,11 +105,14 @@ class Probe:
         return {"messages": messages}
 
     def publish(self, topic, type, msg, wait_s=5.0):
+        """Publish once every subscriber the master lists has connected (or there is at least one and `wait_s`
+        has passed): a node that subscribed but has not connected yet would miss the message."""
         if topic not in self._publishers:
             self._publishers[topic] = rospy.Publisher(topic, self._message_class(type), queue_size=10)
         publisher = self._publishers[topic]
         deadline = time.monotonic() + wait_s
-        while publisher.get_num_connections() == 0 and time.monotonic() < deadline:
+        while publisher.get_num_connections() < max(1, subscriber_count(publisher.resolved_name)) \
+                and time.monotonic() < deadline:
             time.sleep(0.02)
         message = publisher.data_class()
         genpy.message.fill_message_args(message, [msg])
