@@ -7,9 +7,7 @@ backwards, a /timed_move_service whose callback never returns, and an approach s
 (/my_approach) and another package's type (com2009_msgs/Approach): the move check fails naming the direction,
 the timed checks are errors "no reply within", and the approach service is found by type.
 
-Not marked realtime: every check is timed in simulated time, and the reference approach pairs each sweep with the
-odometry at its stamp, so a loaded machine does not move its stop (test_grade_class grades the same servers with
-the same checks beside the other tests).
+Marked realtime: the reference approach's stopping distance depends on its control loop getting the CPU on time.
 """
 import json
 import subprocess
@@ -21,7 +19,7 @@ import pytest
 
 from roslab import wait_for_service, wait_for_service_gone
 
-pytestmark = [pytest.mark.slow]
+pytestmark = [pytest.mark.realtime, pytest.mark.slow]
 
 REAL_TIME_FACTOR = "2"
 REFERENCE_SERVERS = ("/move_service_server", "/timed_move_service_server", "/approach_service_server")
