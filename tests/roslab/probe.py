@@ -83,8 +83,8 @@ class TopicProbe:
         return wait_until(matching, timeout_s, "a matching message on " + topic, interval_s=interval_s)
 
     def publish(self, topic, msg_type, msg, wait_s=5.0):
-        """Publish one message given as a dict, once every subscriber the master lists has connected (waiting up
-        to `wait_s`, then publishing if at least one has); returns how many were connected."""
+        """Publish one message given as a dict, once every subscriber the master lists (at least one) has
+        connected or `wait_s` has passed; returns how many were connected."""
         return self._ask("publish", topic=topic, type=msg_type, msg=msg, wait_s=wait_s)["subscribers"]
 
     def now(self):

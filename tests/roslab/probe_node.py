@@ -105,8 +105,8 @@ class Probe:
         return {"messages": messages}
 
     def publish(self, topic, type, msg, wait_s=5.0):
-        """Publish once every subscriber the master lists has connected (or there is at least one and `wait_s`
-        has passed): a node that subscribed but has not connected yet would miss the message."""
+        """Publish once every subscriber the master lists (at least one) has connected, or once `wait_s` has
+        passed: a node that subscribed but has not connected yet would miss the message."""
         if topic not in self._publishers:
             self._publishers[topic] = rospy.Publisher(topic, self._message_class(type), queue_size=10)
         publisher = self._publishers[topic]
