@@ -6,6 +6,7 @@ import rospy
 import tf2_ros
 
 from learning_tf2.ros_frames import transform
+from stop_request.closed_topic import publish_unless_shut_down
 from turtlesim.msg import Pose
 
 
@@ -16,7 +17,8 @@ class TurtleFrameBroadcaster:
         self.subscriber = rospy.Subscriber("/{}/pose".format(turtle), Pose, self.on_pose)
 
     def on_pose(self, pose):
-        self.broadcaster.sendTransform(transform("world", self.turtle, pose.x, pose.y, pose.theta))
+        publish_unless_shut_down(self.broadcaster.sendTransform,
+                                 transform("world", self.turtle, pose.x, pose.y, pose.theta))
 
 
 def main():

@@ -10,6 +10,7 @@ from geometry_msgs.msg import Twist
 
 from learning_tf2.follow import follow_command
 from learning_tf2.ros_frames import LOOKUP_ERRORS, log_waiting
+from stop_request.closed_topic import publish_unless_shut_down
 from turtlesim.srv import Spawn
 
 CONTROL_RATE_HZ = 10
@@ -65,7 +66,7 @@ class TurtleFollower:
         command = follow_command(seen.x, seen.y)
         twist = Twist()
         twist.linear.x, twist.angular.z = command.linear, command.angular
-        self.cmd_vel.publish(twist)
+        publish_unless_shut_down(self.cmd_vel.publish, twist)
 
     def run(self):
         rate = rospy.Rate(CONTROL_RATE_HZ)

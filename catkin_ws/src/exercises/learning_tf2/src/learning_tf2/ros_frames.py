@@ -5,6 +5,7 @@ import tf2_ros
 from geometry_msgs.msg import TransformStamped
 
 from learning_tf2.follow import yaw_quaternion
+from stop_request.closed_topic import publish_unless_shut_down
 
 LOOKUP_ERRORS = (tf2_ros.LookupException, tf2_ros.ConnectivityException, tf2_ros.ExtrapolationException)
 WAITING_LOG_PERIOD_S = 5.0
@@ -34,7 +35,9 @@ def broadcast_carrot(offset_at, rate_hz=10):
     rate = rospy.Rate(rate_hz)
     while not rospy.is_shutdown():
         now = rospy.Time.now()
-        broadcaster.sendTransform(transform("turtle1", "carrot1", *offset_at(now.to_sec()), stamp=now))
+        carrot = transform("turtle1", "carrot1", *offset_at(now.to_sec()), stamp=now)
+        if not publish_unless_shut_down(broadcaster.sendTransform, carrot):
+            break
         try:
             rate.sleep()
         except rospy.ROSInterruptException:
