@@ -55,7 +55,11 @@ class RosMaster:
                         ROS_HOME=str(workdir), ROS_LOG_DIR=str(workdir / "log"), PYTHONUNBUFFERED="1")
         self.env.pop("ROS_IP", None)
         self._processes = []
-        self.core = self._start_core()
+        try:
+            self.core = self._start_core()
+        except BaseException:   # Ctrl-C or a timeout while the core starts: nothing may outlive the test
+            self.shutdown()
+            raise
 
     def _start_core(self):
         """rosmaster, roscore's parameters and /run_id, then rosout; returns once /rosout is registered."""
