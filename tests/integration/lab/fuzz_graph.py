@@ -17,13 +17,11 @@ from std_srvs.srv import Empty
 from roslab import wait_for_param, wait_for_service, wait_for_topic
 from roslab.fuzz import MIN_REQUESTS, GraphWatch
 from roslab.fuzz_strategies import float64s
+from roslab.launch_args import CHEAP_CAMERA
 from roslab.robot_view import RobotView, front_distance, pose_of
 
 REAL_TIME_FACTOR = 10
 JUDGING_FACTOR = 2
-# A module that starts the fruit detector has it take every camera frame: a small camera keeps the simulator at
-# its real-time factor (with no subscriber, the camera renders nothing).
-SMALL_CAMERA = ("camera_width:=160", "camera_height:=120")
 MAX_LINEAR_MPS = 0.26
 # (package, executable, node, service, extra arguments)
 STOP_SERVER = ("course_sim_services", "moving_stop_services.py", "/moving_stop_services", "/stop", ())
@@ -38,7 +36,7 @@ class Graph:
     def __init__(self, ros_master, servers=()):
         servers = [STOP_SERVER, *servers]
         self.processes = processes = [ros_master.roslaunch("week4_services", "week4_demo.launch", "gui:=false",
-                                          "real_time_factor:={}".format(REAL_TIME_FACTOR), *SMALL_CAMERA)]
+                                          "real_time_factor:={}".format(REAL_TIME_FACTOR), *CHEAP_CAMERA)]
         wait_for_param(ros_master.uri, "/use_sim_time")   # before the rosrun servers read it
         processes += [ros_master.rosrun(package, executable, *args) for package, executable, _, _, args in servers]
         services = list(WEEK4.values()) + [service for *_, service, _ in servers] + ["/moving"]

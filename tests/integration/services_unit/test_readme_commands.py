@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 from roslab import wait_for_param, wait_for_service, wait_until
+from roslab.launch_args import CHEAP_CAMERA
 
 README = Path(__file__).resolve().parents[3] / "README.md"
 SECTION = "### The ROS 2 Services unit in ROS 1"
@@ -40,7 +41,7 @@ def test_the_table_maps_every_row():
 @pytest.fixture(scope="module")
 def simulation(ros_master):
     ros_master.roslaunch("course_sim_services", "course_sim_services.launch", "gui:=false", "real_time_factor:=3",
-                         "camera_width:=160", "camera_height:=120")
+                         *CHEAP_CAMERA)
     assert wait_for_param(ros_master.uri, "/use_sim_time") is True
     wait_for_service(ros_master.uri, "/moving", timeout_s=60)
     return ros_master

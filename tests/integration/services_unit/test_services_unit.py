@@ -12,6 +12,7 @@ from services_quiz_srv.srv import Turn
 from std_srvs.srv import Empty, SetBool
 
 from roslab import wait_for_param, wait_for_service, wait_for_topic, wait_until
+from roslab.launch_args import CHEAP_CAMERA
 from roslab.robot_view import RobotView, angle_between
 
 SERVERS = [("exercise42_pkg", "moving_right_server.py", "/moving_right"),
@@ -23,14 +24,12 @@ TYPES = {"/moving": "std_srvs/Empty", "/stop": "std_srvs/Empty", "/moving_right"
          "/movement": "custom_interfaces/MyCustomServiceMessage", "/move": "custom_interfaces/Move",
          "/turn": "services_quiz_srv/Turn", "/detect_fruit_service": "custom_interfaces/StringServiceMessage"}
 RAMP_S = 1.0
-# The fruit detector takes every camera frame: a small camera keeps the simulator at its real-time factor.
-SMALL_CAMERA = ("camera_width:=160", "camera_height:=120")
 
 
 @pytest.fixture(scope="module")
 def robot(ros_master):
     ros_master.roslaunch("course_sim_services", "course_sim_services.launch", "gui:=false",
-                         "real_time_factor:=3", *SMALL_CAMERA)
+                         "real_time_factor:=3", *CHEAP_CAMERA)
     assert wait_for_param(ros_master.uri, "/use_sim_time") is True   # before the servers read it
     for package, executable, _ in SERVERS:
         ros_master.rosrun(package, executable)
