@@ -1,5 +1,5 @@
 """Plain HTTP checks for tests of web servers (lab_web), without a browser. (Not named http.py: scripts in this
-folder, such as probe_node.py, would then import it instead of the standard library's http package.)"""
+folder, such as client_loop.py, would then import it instead of the standard library's http package.)"""
 import urllib.error
 import urllib.request
 

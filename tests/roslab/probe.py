@@ -1,5 +1,6 @@
 """TopicProbe: the test's eyes and hands on topics, through the probe node (see probe_node.py)."""
 import json
+import os
 import select
 import subprocess
 import sys
@@ -10,7 +11,9 @@ import numpy
 
 from roslab.waiting import wait_until
 
-PROBE_NODE = Path(__file__).with_name("probe_node.py")
+# The probe node runs as `python3 -m roslab.probe_node` with the folder holding roslab on its path, so that it
+# can use the package's other modules.
+ROSLAB_PARENT = Path(__file__).resolve().parents[1]
 
 
 class ProbeError(RuntimeError):
@@ -24,7 +27,9 @@ class TopicProbe:
     """
 
     def __init__(self, master, ready_timeout_s=30.0):
-        self._process = subprocess.Popen([sys.executable, str(PROBE_NODE)], env=master.env,
+        env = dict(master.env, PYTHONPATH=os.pathsep.join(filter(None, [str(ROSLAB_PARENT),
+                                                                          master.env.get("PYTHONPATH")])))
+        self._process = subprocess.Popen([sys.executable, "-m", "roslab.probe_node"], env=env,
                                          stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True,
                                          stderr=open(master.workdir / "probe.log", "w"), start_new_session=True)
         first = self._read_reply(ready_timeout_s)

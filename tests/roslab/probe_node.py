@@ -25,6 +25,8 @@ import rosgraph
 import roslib.message
 import rospy
 
+from roslab.graph import subscribers
+
 
 def to_plain(value):
     """A message as JSON-able plain data: dicts of fields, lists, seconds for Time/Duration, str for inf/nan."""
@@ -43,9 +45,7 @@ def to_plain(value):
 
 def subscriber_count(topic):
     """How many nodes other than this one the master lists as subscribers of `topic`."""
-    _, subscribers, _ = rosgraph.Master(rospy.get_name()).getSystemState()
-    nodes = next((nodes for name, nodes in subscribers if name == topic), [])
-    return len([node for node in nodes if node != rospy.get_name()])
+    return len([node for node in subscribers(rosgraph.get_master_uri(), topic) if node != rospy.get_name()])
 
 
 class Probe:
