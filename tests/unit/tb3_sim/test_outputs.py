@@ -66,6 +66,24 @@ def test_rates_over_two_sim_seconds(world):
                       "model_states": 200, "world_markers": 4, **camera}
 
 
+@pytest.mark.parametrize("clock_rate, ticks_per_second", [(100.0, 100), (0.0, 200)])
+@pytest.mark.parametrize("subscribed", [True, False])
+def test_the_clock_ticks_exactly_at_the_steps_that_send_clock(world, clock_rate, ticks_per_second, subscribed):
+    """The loop waits for wall time only at ticks: one per /clock message, whatever the rate, with or without
+    subscribers (/clock is not lazy), and none after a reset until the next message."""
+    publisher = outputs(world, subscribed=subscribed, clock_rate=clock_rate)
+    clock = publisher.output(ClockOutput)
+    ticks, sent = [], []
+    for _ in range(200):
+        now_s = world.step()
+        sent.append(any(fake.name == "clock" for fake, _ in publisher.collect(world)))
+        ticks.append(clock.ticked(now_s))
+    assert sum(ticks) == ticks_per_second
+    assert ticks == sent if subscribed else not any(sent)
+    publisher.reset(world.time_s)
+    assert not clock.ticked(world.time_s)
+
+
 def test_nothing_is_built_without_subscribers_and_lazy_outputs_are_not_read(world):
     publisher = outputs(world, subscribed=False)
     counts, _ = run(world, publisher, 1.0)

@@ -60,7 +60,8 @@ threads send (see publishers).
 Time: physics runs in simulated time and every stamp is the world's time. The node is the clock, so it does not
 subscribe to its own /clock (rospy's `disable_rostime`: at 200 Hz x the real-time factor that echo would cost a
 third of the loop); its rospy time, used only for log stamps and warning throttles, is therefore wall time, and
-so is the pacing of steps (`~real_time_factor`).
+so is the pacing of steps (`~real_time_factor`), which waits only after steps that sent /clock (see
+ClockOutput.ticked).
 """
 
 import os
@@ -92,6 +93,7 @@ from tb3_sim.ros import messages
 from tb3_sim.ros.config import config_from_params
 from tb3_sim.ros.gazebo_api import GazeboApi
 from tb3_sim.ros.outputs import OutputPublisher, robot_outputs, world_outputs
+from tb3_sim.ros.outputs.clock import ClockOutput
 from tb3_sim.ros.outputs.scan import ScanOutput
 from tb3_sim.ros.publishers import output_publisher
 from tb3_sim.ros.robot_naming import spawned_robot_naming
@@ -121,6 +123,7 @@ class SimNode:
         self._physics = PhysicsProperties.for_pacing(world.step_s, config.real_time_factor)
         self._pacer = Pacer(config.real_time_factor)
         self._outputs = OutputPublisher(world_outputs(config), output_publisher)
+        self._clock = self._outputs.output(ClockOutput)
         self._namings = {}        # robot name -> RobotNaming
         self._cmd_vel = []        # one Subscriber per robot
         self._static_transforms = ()
@@ -268,9 +271,10 @@ class SimNode:
                 if rospy.is_shutdown():
                     return   # Ctrl-C closed the publishers after the loop's shutdown check
                 raise
-            delay_s = self._pacer.delay(now_s, time.monotonic())
-            if delay_s:
-                time.sleep(delay_s)
+            if self._clock.ticked(now_s):
+                delay_s = self._pacer.delay(now_s, time.monotonic())
+                if delay_s:
+                    time.sleep(delay_s)
 
 
 def run_with_window(node, stop):

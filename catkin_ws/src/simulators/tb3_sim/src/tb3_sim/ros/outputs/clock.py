@@ -16,12 +16,29 @@ from tb3_sim.ros.outputs.output import Output, Topic
 
 
 class ClockOutput(Output):
+    """Remembers its last tick, for the loop's pacing: it waits for wall time only after a tick (see ticked)."""
+
     lazy = False
 
     def __init__(self, rate_hz):
         self.rate_hz = rate_hz
         super().__init__()
         self.topics = (Topic("/clock", Clock, messages.clock_message),)
+        self._last_tick_s = None
 
     def read(self, world, now_s, wanted):
+        self._last_tick_s = now_s
         return now_s
+
+    def reset(self, now_s):
+        super().reset(now_s)
+        self._last_tick_s = None
+
+    def ticked(self, now_s):
+        """True if /clock went out for the step that reached `now_s`.
+
+        The loop holds the real-time factor only at these steps: a node on /use_sim_time sees time only through
+        /clock, so it cannot tell when, between two ticks, a message went out, and one wake-up per tick instead
+        of per physics step halves the simulator's CPU at real time.
+        """
+        return self._last_tick_s == now_s
