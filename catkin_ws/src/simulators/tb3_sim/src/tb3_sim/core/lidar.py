@@ -51,39 +51,47 @@ def beam_angles():
     return LIDAR_ANGLE_MIN_RAD + LIDAR_ANGLE_INCREMENT_RAD * np.arange(LIDAR_SAMPLES)
 
 
+def _clamp(values, low, high):
+    """np.clip(values, low, high), NaN kept, in two plain ufuncs: np.clip's dispatch costs more than the work on
+    arrays of a few hundred values, twice per sweep."""
+    return np.minimum(np.maximum(values, low), high)
+
+
 def cast_rays(origin, angles, obstacles, min_range, max_range):
     """Distance along each ray to the nearest obstacle in [min_range, max_range), or +inf.
 
     `origin` is (x, y) and `angles` an (N,) array of ray directions in rad, world frame; returns an (N,)
-    float64 array. The work is N x (obstacles left after culling): anything wholly beyond max_range, and
-    solid edges that face away from the origin, are dropped first. Parallel rays and misses become NaN or inf
-    in the intermediate arrays, and every comparison with NaN is false, so they need no special case.
+    float64 array. The work is (obstacles left after culling) x N: anything wholly beyond max_range, and
+    solid edges that face away from the origin, are dropped first. The arrays are laid out one row per obstacle,
+    so the nearest hit of each ray is an element-wise minimum over rows (a third faster than a minimum along
+    short rows). Parallel rays and misses become NaN or inf in the intermediate arrays, and every comparison with
+    NaN is false, so they need no special case.
     """
     ox, oy = origin
-    dx, dy = np.cos(angles)[:, None], np.sin(angles)[:, None]
+    dx, dy = np.cos(angles), np.sin(angles)
     distances = np.full(len(angles), np.inf)
     with np.errstate(divide="ignore", invalid="ignore"):
         lines = obstacles.lines
         ax, ay = lines[:, 0] - ox, lines[:, 1] - oy
         ex, ey = lines[:, 2] - lines[:, 0], lines[:, 3] - lines[:, 1]
-        along = np.clip(-(ax * ex + ay * ey) / (ex * ex + ey * ey), 0.0, 1.0)
+        along = _clamp(-(ax * ex + ay * ey) / (ex * ex + ey * ey), 0.0, 1.0)
         keep = np.hypot(ax + along * ex, ay + along * ey) < max_range
         keep &= ~obstacles.solid | (ax * ey - ay * ex < 0.0)
         if keep.any():
-            ax, ay, ex, ey = ax[keep], ay[keep], ex[keep], ey[keep]
+            ax, ay, ex, ey = ax[keep, None], ay[keep, None], ex[keep, None], ey[keep, None]
             inverse = 1.0 / (dx * ey - dy * ex)
             t = (ax * ey - ay * ex) * inverse
             s = (ax * dy - ay * dx) * inverse
             t[~((s >= 0.0) & (s <= 1.0) & (t >= min_range))] = np.inf
-            np.minimum(distances, t.min(axis=1), out=distances)
+            np.minimum(distances, t.min(axis=0), out=distances)
         vx, vy, r = ox - obstacles.circles[:, 0], oy - obstacles.circles[:, 1], obstacles.circles[:, 2]
         keep = np.hypot(vx, vy) - r < max_range
         if keep.any():
-            vx, vy, r = vx[keep], vy[keep], r[keep]
+            vx, vy, r = vx[keep, None], vy[keep, None], r[keep, None]
             b = dx * vx + dy * vy
             t = -b - np.sqrt(b * b - (vx * vx + vy * vy - r * r))
             t[~(t >= min_range)] = np.inf
-            np.minimum(distances, t.min(axis=1), out=distances)
+            np.minimum(distances, t.min(axis=0), out=distances)
     distances[distances >= max_range] = np.inf
     return distances
 
@@ -121,5 +129,5 @@ class Lidar:
                            LIDAR_RANGE_MIN_M, LIDAR_RANGE_MAX_M)
         noise = self._rng.normal(0.0, self.noise_stddev_m, LIDAR_SAMPLES)
         finite = np.isfinite(ranges)
-        ranges[finite] = np.clip(ranges[finite] + noise[finite], LIDAR_RANGE_MIN_M, LIDAR_RANGE_MAX_M)
+        ranges[finite] = _clamp(ranges[finite] + noise[finite], LIDAR_RANGE_MIN_M, LIDAR_RANGE_MAX_M)
         return ScanResult(ranges.astype(np.float32), float(time_s))

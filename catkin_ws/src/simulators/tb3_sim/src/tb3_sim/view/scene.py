@@ -5,6 +5,7 @@ A `Scene` is immutable plain data in the world frame (metres, radians). `Trail` 
 """
 
 import math
+from collections import deque
 from dataclasses import dataclass
 from typing import Optional, Tuple
 
@@ -21,7 +22,7 @@ TRAIL_JUMP_M = 0.5
 
 
 class Trail:
-    """The robot's recent path as strokes (lists of (x, y) points), oldest points dropped first."""
+    """The robot's recent path as strokes (sequences of (x, y) points), oldest points dropped first."""
 
     def __init__(self, spacing_m=TRAIL_SPACING_M, max_points=TRAIL_MAX_POINTS, jump_m=TRAIL_JUMP_M):
         self.spacing_m = spacing_m
@@ -30,7 +31,7 @@ class Trail:
         self.clear()
 
     def clear(self):
-        self._strokes = [[]]
+        self._strokes = deque([deque()])   # deques: dropping the oldest point is O(1) once the trail is full
         self._count = 0
 
     def add(self, x, y):
@@ -41,15 +42,15 @@ class Trail:
             if distance < self.spacing_m:
                 return
             if distance > self.jump_m:
-                stroke = []
+                stroke = deque()
                 self._strokes.append(stroke)
         stroke.append((x, y))
         self._count += 1
         if self._count > self.max_points:
-            self._strokes[0].pop(0)
+            self._strokes[0].popleft()
             self._count -= 1
             if not self._strokes[0] and len(self._strokes) > 1:
-                self._strokes.pop(0)
+                self._strokes.popleft()
 
     def strokes(self):
         """The strokes as tuples of points, oldest first."""
@@ -65,7 +66,10 @@ class Trails:
     def add(self, robots):
         """Record every robot of `robots` (core.robot.Robot objects) where it is now."""
         for robot in robots:
-            self._trails.setdefault(robot.name, Trail()).add(*robot.pose[:2])
+            trail = self._trails.get(robot.name)
+            if trail is None:
+                trail = self._trails[robot.name] = Trail()
+            trail.add(*robot.pose[:2])
 
     def strokes(self, name):
         """The strokes of the robot `name` (none if it has no trail yet)."""

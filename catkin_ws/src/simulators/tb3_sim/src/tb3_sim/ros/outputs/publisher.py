@@ -64,11 +64,18 @@ class OutputPublisher:
         due = []
         for route in self._every_step:
             self._publish_due(world, now_s, route, due)
-        if now_s + TIME_EPSILON_S >= self._next_due_s:
+        reached_s = now_s + TIME_EPSILON_S
+        if reached_s >= self._next_due_s:
+            # One pass both publishes what is due and finds the next deadline; a deadline not yet reached is
+            # compared here rather than asked of its schedule (a call per output per tick).
+            next_due_s = math.inf
             for route in self._periodic:
-                if route[0].schedule.due(now_s):
+                schedule = route[0].schedule
+                if reached_s >= schedule.next_due_s and schedule.due(now_s):
                     self._publish_due(world, now_s, route, due)
-            self._next_due_s = self._earliest_due()
+                if schedule.next_due_s < next_due_s:
+                    next_due_s = schedule.next_due_s
+            self._next_due_s = next_due_s
         return due
 
     @staticmethod
