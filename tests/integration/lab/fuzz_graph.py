@@ -3,9 +3,10 @@ the approach arena at REAL_TIME_FACTOR with the Week 4 servers, and whichever ot
 
 The fuzz runs at REAL_TIME_FACTOR; a module's last check, that a server still does a valid motion right, is
 judged on where the robot stopped, at JUDGING_FACTOR (Graph.paced). A stop that comes late by some wall time
-overshoots by that time times the factor: a 43 ms stall of a busy 2-core machine, seen twice in fresh-clone runs,
-is 0.43 s of sim time at 10x, beyond the checks' 0.3-0.4 s; at 2x it is 0.09 s. Gazebo itself runs the course at
-1x, so the checks stay stricter than the course's own setup."""
+overshoots by that time times the factor: a 43 ms stall of a busy 2-core machine, seen twice in fresh-clone runs
+when the fuzz ran at 10x, was 0.43 s of sim time there, beyond the checks' 0.3-0.4 s; at REAL_TIME_FACTOR (5x) it
+would be 0.22 s, with little margin left; at 2x it is 0.09 s. Gazebo itself runs the course at 1x, so the checks
+stay stricter than the course's own setup."""
 import contextlib
 import signal
 
