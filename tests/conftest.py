@@ -2,6 +2,7 @@
 import json
 import os
 import resource
+import signal
 import sys
 import time
 from pathlib import Path
@@ -27,6 +28,11 @@ def pytest_configure(config):
     # Whatever a test starts that sources scripts/env.sh leaves the user's ~/catkin_ws alone; the tests of the
     # student's workspace set LAB_STUDENT_WS and HOME themselves.
     os.environ["LAB_STUDENT_WS"] = "off"
+    # A run started in the background by a script (`(scripts/test &)`, nohup) ignores SIGINT, and every process a
+    # test starts would inherit that: rosmaster, rosout and C++ nodes would then ignore the Ctrl-C that ends them
+    # (roslab.processes), and each would hold its test up for the whole 20 s grace before SIGKILL.
+    if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 def recorded_wall_s(log=REPO_ROOT / "bench-output" / "module_cost.jsonl"):

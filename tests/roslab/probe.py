@@ -96,6 +96,13 @@ class TopicProbe:
         """The probe's rospy time in seconds (simulated when /use_sim_time was set before it started)."""
         return self._ask("now")["now"]
 
+    def sleep_sim(self, seconds, timeout_s=30.0):
+        """Return once `seconds` of the probe's time (sim time under /use_sim_time) have passed: a wait that
+        means the same at any real-time factor, where a wall-clock sleep waits 3 sim seconds at 3x for what 1
+        needs."""
+        until_s = self.now() + seconds
+        wait_until(lambda: self.now() >= until_s, timeout_s, "{} s of the probe's time".format(seconds))
+
     def stop(self):
         if self._process.poll() is None:
             self._process.stdin.close()

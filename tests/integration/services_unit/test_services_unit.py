@@ -23,7 +23,7 @@ SERVERS = [("exercise42_pkg", "moving_right_server.py", "/moving_right"),
 TYPES = {"/moving": "std_srvs/Empty", "/stop": "std_srvs/Empty", "/moving_right": "std_srvs/SetBool",
          "/movement": "custom_interfaces/MyCustomServiceMessage", "/move": "custom_interfaces/Move",
          "/turn": "services_quiz_srv/Turn", "/detect_fruit_service": "custom_interfaces/StringServiceMessage"}
-RAMP_S = 1.0
+RAMP_SIM_S = 1.0   # sim seconds for the wheels to reach a commanded speed (they ramp at 1 m/s^2)
 
 
 @pytest.fixture(scope="module")
@@ -42,7 +42,7 @@ def robot(ros_master):
 @pytest.fixture(autouse=True)
 def stopped(robot):
     rospy.ServiceProxy("/stop", Empty)()
-    time.sleep(RAMP_S)
+    robot.probe.sleep_sim(RAMP_SIM_S)
 
 
 def velocity(robot):
@@ -67,11 +67,11 @@ def test_service_names_and_types(ros_master, robot, name):
 def test_service_client_starts_and_stop_client_stops_the_robot(ros_master, robot):
     code, output = run(ros_master, "rosrun", "client_pkg", "service_client.py")
     assert code == 0 and "the robot is moving" in output
-    time.sleep(RAMP_S)
+    robot.probe.sleep_sim(RAMP_SIM_S)
     assert velocity(robot) == pytest.approx((0.3, 0.3), abs=0.01)
     code, output = run(ros_master, "rosrun", "client_pkg", "stop_client.py")
     assert code == 0 and "the robot is stopped" in output
-    time.sleep(RAMP_S)
+    robot.probe.sleep_sim(RAMP_SIM_S)
     assert velocity(robot) == pytest.approx((0.0, 0.0), abs=0.01)
 
 
@@ -86,24 +86,24 @@ def test_service_client_waits_politely_for_a_missing_service(ros_master, robot):
 def test_moving_right(robot):
     reply = rospy.ServiceProxy("/moving_right", SetBool)(True)
     assert (reply.success, reply.message) == (True, "MOVING TO THE RIGHT RIGHT RIGHT!")
-    time.sleep(RAMP_S)
+    robot.probe.sleep_sim(RAMP_SIM_S)
     assert velocity(robot) == pytest.approx((0.3, -0.3), abs=0.01)
     reply = rospy.ServiceProxy("/moving_right", SetBool)(False)
     assert (reply.success, reply.message) == (False, "It is time to stop!")
-    time.sleep(RAMP_S)
+    robot.probe.sleep_sim(RAMP_SIM_S)
     assert velocity(robot) == pytest.approx((0.0, 0.0), abs=0.01)
 
 
 @pytest.mark.parametrize("move, expected", [("Turn Left", (0.1, 0.5)), ("Turn Right", (0.1, -0.5))])
 def test_movement_words_set_the_velocity(robot, move, expected):
     assert rospy.ServiceProxy("/movement", MyCustomServiceMessage)(move).success is True
-    time.sleep(RAMP_S)
+    robot.probe.sleep_sim(RAMP_SIM_S)
     assert velocity(robot) == pytest.approx(expected, abs=0.01)
 
 
 def test_movement_refuses_other_words_without_motion(robot):
     assert rospy.ServiceProxy("/movement", MyCustomServiceMessage)("Jump").success is False
-    time.sleep(RAMP_S)
+    robot.probe.sleep_sim(RAMP_SIM_S)
     assert velocity(robot) == pytest.approx((0.0, 0.0), abs=0.001)
 
 
@@ -129,7 +129,7 @@ def test_move_drives_for_the_given_time_then_stops(robot):
     after = robot.settled_pose()
     ahead = (after[0] - before[0]) * math.cos(before[2]) + (after[1] - before[1]) * math.sin(before[2])
     assert ahead == pytest.approx(0.4, rel=0.05)
-    time.sleep(RAMP_S)
+    robot.probe.sleep_sim(RAMP_SIM_S)
     assert velocity(robot)[0] == pytest.approx(0.0, abs=0.002)
 
 
@@ -138,7 +138,7 @@ def test_move_drives_for_the_given_time_then_stops(robot):
 def test_move_refuses_bad_requests_without_motion(robot, direction, speed, seconds):
     before = robot.pose()
     assert rospy.ServiceProxy("/move", Move)(direction, speed, seconds).success is False
-    time.sleep(0.5)
+    robot.probe.sleep_sim(RAMP_SIM_S)
     after = robot.settled_pose()
     assert abs(after[0] - before[0]) < 0.002 and abs(after[1] - before[1]) < 0.002
 
@@ -148,7 +148,7 @@ def test_turn_right_for_ten_seconds(robot):
     assert rospy.ServiceProxy("/turn", Turn)("right", 0.2, 10).success is True
     after = robot.settled_pose()
     assert angle_between(before[2], after[2]) == pytest.approx(-2.0, abs=0.1)
-    time.sleep(RAMP_S)
+    robot.probe.sleep_sim(RAMP_SIM_S)
     assert velocity(robot)[1] == pytest.approx(0.0, abs=0.002)
 
 
