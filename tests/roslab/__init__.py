@@ -1,7 +1,8 @@
 """Test helpers for a real ROS 1 graph: a private master per test module, node and launch processes that
 are always ended, waiting with timeouts, and a probe node that reads and writes topics for the test."""
 from roslab.http_check import http_status
-from roslab.master import RosMaster, free_port, private_master
+from roslab.master import RosMaster, private_master
+from roslab.ports import free_port
 from roslab.probe import TopicProbe
 from roslab.processes import RosProcess
 from roslab.waiting import (

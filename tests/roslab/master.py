@@ -14,23 +14,15 @@ suite. What roslaunch adds besides (respawning a rosout that dies) no test relie
 import contextlib
 import functools
 import os
-import socket
 import subprocess
 import uuid
 
 import rosgraph
 from roslib.packages import find_node
 
+from roslab.ports import free_port
 from roslab.processes import RosProcess
 from roslab.waiting import wait_until
-
-
-def free_port():
-    """A TCP port on localhost that was free a moment ago."""
-    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as sock:
-        sock.bind(("localhost", 0))
-        return sock.getsockname()[1]
-
 
 ROSMASTER_WORKERS = 3   # roslaunch's NUM_WORKERS, what roscore gives rosmaster
 
