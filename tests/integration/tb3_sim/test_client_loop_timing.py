@@ -15,7 +15,8 @@ DURATION_S = 3.0
 CLOCK_TICK_S = 0.01
 
 
-@pytest.fixture(scope="module", params=[pytest.param(1, marks=pytest.mark.realtime), 0], ids=["real_time", "unpaced"])
+@pytest.fixture(scope="module", params=[pytest.param(1, marks=[pytest.mark.realtime, pytest.mark.solo]), 0],
+                ids=["real_time", "unpaced"])
 def factor(request, ros_master, tmp_path_factory):
     sim = RosProcess(["roslaunch", "--wait", "tb3_sim", "tb3_sim.launch", "gui:=false",
                       f"real_time_factor:={request.param}"], ros_master.env,
