@@ -3,7 +3,9 @@ sourced again after something put another python3 first), binds ROS to localhost
 otherwise, and scripts/setup re-runs as a no-op. HOME is a temporary folder (env.sh creates the student's
 workspace there)."""
 import os
+import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -106,7 +108,14 @@ def run_setup():
 
 
 def test_second_setup_is_a_no_op_that_says_so():
+    """Also after Python wrote byte-code caches under catkin_ws/src, as every import of a lab module does: they
+    used to count as changed sources, so each scripts/test rebuilt the workspace while its tests were running."""
     run_setup()
+    cache = REPO_ROOT / "catkin_ws/src/lib/tb3_client/src/tb3_client/__pycache__"
+    shutil.rmtree(cache, ignore_errors=True)
+    env = {name: value for name, value in os.environ.items() if name != "PYTHONDONTWRITEBYTECODE"}
+    subprocess.run([sys.executable, "-c", "import tb3_client.commands"], env=env, check=True)
+    assert list(cache.glob("commands.*.pyc"))
     second = run_setup()
     assert second.count("already done") == 3, second
     assert "catkin_make (log" not in second
