@@ -63,10 +63,16 @@ def snoop():
     import os
 
     home = os.path.expanduser("~")
-    patterns = @READ_PATHS@ + ["/tmp/**/*", os.path.join(os.path.dirname(os.path.dirname(home)), "**", "*")]
+    # Beyond the paths it aims at, everything under /tmp and next to this workspace, but the lab's checkout: it is
+    # readable by design, and a lab cloned under /tmp (with its build, venv and byte-code) made the report longer
+    # than the log keeps.
+    aimed = @READ_PATHS@
+    lab = @LAB_ROOT@ + os.sep
     read = {}
-    for pattern in patterns:
+    for pattern in aimed + ["/tmp/**/*", os.path.join(os.path.dirname(os.path.dirname(home)), "**", "*")]:
         for path in glob.glob(pattern, recursive=True):
+            if pattern not in aimed and path.startswith(lab):
+                continue
             if os.path.isfile(path) and not path.startswith(home):
                 try:
                     with open(path, errors="replace") as stolen:

@@ -117,6 +117,7 @@ def hostile(env, ros_master, tmp_path_factory):
                LAB_ROOT / "catkin_ws" / "src" / marker, Path("/root", marker), Path.home() / marker]
     reads = [READABLE, secret, folder / "**" / "*"]
     fill = {"@NETWORK_TARGETS@": repr(targets), "@READ_PATHS@": repr([str(path) for path in reads]),
+            "@LAB_ROOT@": repr(str(LAB_ROOT)),
             "@WRITE_PATHS@": repr([str(path) for path in planted]), "@MARKER@": marker}
     for name in HOSTILE:
         make_submission(name, folder, fill)
