@@ -1,12 +1,13 @@
-"""Free TCP ports for masters and servers a test starts, that no other process can take before they bind.
+"""Free TCP ports for the masters and servers a test starts, that no ROS node and no other test worker can be
+given before they bind.
 
 A port the kernel picked for `bind(("localhost", 0))` and that was released at once is free only for a moment:
 every ROS node binds its XML-RPC and TCPROS servers to port 0 too, and the kernel hands out the same range
 (net.ipv4.ip_local_port_range, 32768-60999 here) to them and to every outgoing connection. With three test
 workers starting nodes, one of them took such a port in the second before the test's web server bound it
-(`address already in use`, a failed run). So the ports come from below that range, where the kernel never
-picks one by itself, each xdist worker from a block of its own, counting on from a random start and skipping
-any port that cannot be bound right now (another program's).
+(`address already in use`, a failed run). So the ports come from below that range (Linux's default, which this
+module assumes), where the kernel never picks one by itself, each xdist worker from a block of its own, counting
+on from a random start and skipping any port that cannot be bound right now (another program's).
 """
 import itertools
 import os
