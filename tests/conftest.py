@@ -97,16 +97,19 @@ def _cpu_seconds():
 
 @pytest.fixture(scope="module", autouse=True)
 def _module_cost(request):
-    """With LAB_TEST_COST_LOG set (scripts/test sets it), append one JSON line per test module to that file: its
-    wall seconds and CPU seconds, including the processes it started and ended (tests/bench/suite_cost.py sums
-    them up). Set up before, and ended after, every other fixture of the module."""
+    """With LAB_TEST_COST_LOG set (scripts/test sets it), append one JSON line per test module to that file: how
+    many of its tests this run selected, its wall seconds and CPU seconds, including the processes it started and
+    ended (tests/bench/suite_cost.py sums them up). Set up before, and ended after, every other fixture of the
+    module."""
     log = os.environ.get("LAB_TEST_COST_LOG")
     if not log:
         yield
         return
     wall, cpu = time.monotonic(), _cpu_seconds()
     yield
-    line = {"module": str(Path(request.node.path).relative_to(REPO_ROOT)),
+    path = Path(request.node.path)
+    line = {"module": str(path.relative_to(REPO_ROOT)),
+            "tests": sum(item.path == path for item in request.session.items),
             "wall_s": round(time.monotonic() - wall, 2), "cpu_s": round(_cpu_seconds() - cpu, 2)}
     with open(log, "a") as stream:
         stream.write(json.dumps(line) + "\n")

@@ -18,14 +18,18 @@ def read_costs(path=LOG):
 
 
 def table(costs, shown=SHOWN):
-    """Lines of a table of the `shown` costliest modules by CPU, with totals."""
+    """Lines of a table of the `shown` costliest modules by CPU, with totals (test counts: logs from before
+    conftest counted them show none)."""
     total_cpu = sum(cost["cpu_s"] for cost in costs)
     total_wall = sum(cost["wall_s"] for cost in costs)
-    lines = ["{:<72} {:>8} {:>8} {:>6}".format("module", "CPU s", "wall s", "CPU %")]
+    total_tests = sum(cost.get("tests", 0) for cost in costs)
+    lines = ["{:<72} {:>6} {:>8} {:>8} {:>6}".format("module", "tests", "CPU s", "wall s", "CPU %")]
     for cost in sorted(costs, key=lambda cost: cost["cpu_s"], reverse=True)[:shown]:
-        lines.append("{:<72} {:>8.1f} {:>8.1f} {:>5.1f}%".format(cost["module"][-72:], cost["cpu_s"], cost["wall_s"],
-                                                                  100.0 * cost["cpu_s"] / total_cpu))
-    lines.append("{:<72} {:>8.1f} {:>8.1f}".format("all {} modules".format(len(costs)), total_cpu, total_wall))
+        lines.append("{:<72} {:>6} {:>8.1f} {:>8.1f} {:>5.1f}%".format(
+            cost["module"][-72:], cost.get("tests", ""), cost["cpu_s"], cost["wall_s"],
+            100.0 * cost["cpu_s"] / total_cpu))
+    lines.append("{:<72} {:>6} {:>8.1f} {:>8.1f}".format("all {} modules".format(len(costs)), total_tests or "",
+                                                         total_cpu, total_wall))
     return lines
 
 
