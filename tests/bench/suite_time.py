@@ -6,8 +6,8 @@ under the other benchmarks). A fresh clone's first run includes set-up: the venv
 
 `run()` returns the rows [(name, value, unit, target, comparison)] for scripts/bench's table; none when no
 whole-suite run has been recorded yet (it says so). Besides the wall times, two rows put them in context: the
-lower bound the run's CPU seconds set on 2 cores, and the time per test against the target's own starting point
-(the suite has grown since the target was set).
+lower bound the run's CPU seconds set on the machine's cores, and the time per test against the target's own
+starting point (the suite has grown since the target was set).
 """
 import json
 from pathlib import Path
