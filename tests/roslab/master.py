@@ -23,7 +23,7 @@ import rospkg
 from roslib.packages import find_node
 
 from roslab.ports import free_port
-from roslab.processes import RosProcess
+from roslab.processes import RosProcess, stop_together
 from roslab.waiting import wait_until
 
 ROSMASTER_WORKERS = 3   # roslaunch's NUM_WORKERS, what roscore gives rosmaster
@@ -124,8 +124,11 @@ class RosMaster:
         return self.start(["roslaunch", "--wait", package, launch_file, *args], launch_file)
 
     def shutdown(self):
-        """End every process this master started (nodes and probes first, roscore last)."""
-        for process in reversed(self._processes):
+        """End every process this master started: the nodes, launch files and probes side by side, then roscore's
+        rosout and rosmaster, which the others need while they unregister."""
+        core = getattr(self, "core", [])   # unset when the core failed to start
+        stop_together(process for process in reversed(self._processes) if process not in core)
+        for process in reversed(core):
             process.stop()
 
 

@@ -103,9 +103,14 @@ class TopicProbe:
         until_s = self.now() + seconds
         wait_until(lambda: self.now() >= until_s, timeout_s, "{} s of the probe's time".format(seconds))
 
-    def stop(self):
-        if self._process.poll() is None:
+    def interrupt(self):
+        """Ask the probe to end (its stdin closed: it exits at the end of its input); stop() waits for it."""
+        if self._process.poll() is None and not self._process.stdin.closed:
             self._process.stdin.close()
+
+    def stop(self):
+        self.interrupt()
+        if self._process.poll() is None:
             try:
                 self._process.wait(timeout=5)
             except subprocess.TimeoutExpired:

@@ -76,6 +76,7 @@ class RosProcess:
         self._log = open(log_path, "wb")
         self.popen = subprocess.Popen(self.command, env=env, stdout=self._log, stderr=subprocess.STDOUT,
                                       stdin=subprocess.DEVNULL, start_new_session=True)
+        self._interrupted = None   # (monotonic time, descendants seen before, whether it ran) at interrupt()
 
     @property
     def pid(self):
@@ -98,19 +99,29 @@ class RosProcess:
         except ProcessLookupError:
             pass
 
+    def interrupt(self):
+        """Ctrl-C (SIGINT to the process group), once; stop() begins with it. Interrupting several processes before
+        stopping them lets them shut down side by side (see stop_together)."""
+        if self._interrupted is None:
+            offspring = set(descendants(self.popen.pid))
+            running = self.running()
+            if running:
+                self.signal(signal.SIGINT)
+            self._interrupted = (time.monotonic(), offspring, running)
+
     def stop(self, grace_s=20.0):
-        """SIGINT (what Ctrl-C sends, so nodes run their shutdown hooks), then SIGKILL after `grace_s`.
+        """SIGINT (what Ctrl-C sends, so nodes run their shutdown hooks), then SIGKILL `grace_s` after it.
 
         A wrapper may exit before the children it forwarded Ctrl-C to (`rosbag record` leaves its recorder
         closing the bag), so descendants get up to OFFSPRING_GRACE_S more to finish on their own. roslaunch
         puts each node in a session of its own, so a node that outlives a killed roslaunch would escape the
         process group: every descendant seen before or during the shutdown is killed at the end."""
-        offspring = set(descendants(self.popen.pid))
-        if self.running():
-            self.signal(signal.SIGINT)
-            deadline = time.monotonic() + grace_s
+        self.interrupt()
+        interrupted_at, offspring, was_running = self._interrupted
+        if was_running:
+            deadline = interrupted_at + grace_s
             try:
-                self.popen.wait(timeout=grace_s)
+                self.popen.wait(timeout=max(0.0, deadline - time.monotonic()))
             except subprocess.TimeoutExpired:
                 offspring.update(descendants(self.popen.pid))
             _wait_for_exit(offspring, min(deadline, time.monotonic() + OFFSPRING_GRACE_S))
@@ -121,3 +132,14 @@ class RosProcess:
         _wait_for_exit(offspring, time.monotonic() + OFFSPRING_GRACE_S)   # SIGKILL takes effect asynchronously
         self._log.close()
         return self.popen.returncode
+
+
+def stop_together(processes):
+    """Stop `processes` (RosProcess or TopicProbe) side by side: Ctrl-C to all, then wait for each. A rospy node
+    takes about a second to shut down and a launch file as long as its slowest node; one after another, a module
+    with a dozen of them spent up to 17 s in its teardown."""
+    processes = list(processes)
+    for process in processes:
+        process.interrupt()
+    for process in processes:
+        process.stop()
