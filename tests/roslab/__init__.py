@@ -4,7 +4,7 @@ from roslab.http_check import http_status
 from roslab.master import RosMaster, private_master
 from roslab.ports import free_port
 from roslab.probe import TopicProbe
-from roslab.processes import RosProcess
+from roslab.processes import RosProcess, stop_together
 from roslab.waiting import (
     service_uri,
     wait_for_param,
@@ -15,4 +15,5 @@ from roslab.waiting import (
 )
 
 __all__ = ["RosMaster", "RosProcess", "TopicProbe", "free_port", "http_status", "private_master", "service_uri",
-           "wait_for_param", "wait_for_service", "wait_for_service_gone", "wait_for_topic", "wait_until"]
+           "stop_together", "wait_for_param", "wait_for_service", "wait_for_service_gone", "wait_for_topic",
+           "wait_until"]

@@ -19,7 +19,7 @@ import textwrap
 
 import pytest
 
-from roslab import wait_for_service
+from roslab import stop_together, wait_for_service
 
 from .conftest import LAB_ROOT
 
@@ -82,8 +82,7 @@ def student_nodes(ros_master, tmp_path):
         wait_for_service(ros_master.uri, "/my_adder/add", timeout_s=30)
         yield ros_master
     finally:
-        for process in processes:
-            process.stop()
+        stop_together(processes)
 
 
 def test_float_sums_and_a_counter_that_ignores_cancels_fail_with_reasons(student_nodes, tmp_path):

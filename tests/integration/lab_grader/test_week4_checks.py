@@ -19,7 +19,7 @@ import time
 
 import pytest
 
-from roslab import wait_for_service, wait_for_service_gone
+from roslab import stop_together, wait_for_service, wait_for_service_gone
 
 pytestmark = pytest.mark.slow
 
@@ -151,8 +151,7 @@ def wrong_servers(reference, tmp_path):
             wait_for_service(reference.uri, name, timeout_s=30)
         yield reference
     finally:
-        for process in processes:
-            process.stop()
+        stop_together(processes)
 
 
 def test_wrong_servers_fail_error_and_are_found_by_type(wrong_servers, tmp_path):

@@ -1,7 +1,7 @@
 """Fixtures shared by the tb3_sim test modules."""
 import pytest
 
-from roslab import RosProcess, wait_for_service, wait_for_service_gone, wait_for_topic
+from roslab import RosProcess, stop_together, wait_for_service, wait_for_service_gone, wait_for_topic
 
 SIMULATOR_SERVICE = "/gazebo/get_world_properties"
 
@@ -24,6 +24,5 @@ def launch(ros_master, tmp_path):
         return process
 
     yield start
-    for process in started:
-        process.stop()
+    stop_together(started)
     wait_for_service_gone(ros_master.uri, SIMULATOR_SERVICE)

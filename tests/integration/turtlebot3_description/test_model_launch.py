@@ -6,7 +6,7 @@ import time
 import pytest
 import rosgraph
 
-from roslab import RosProcess, wait_for_param, wait_until
+from roslab import RosProcess, stop_together, wait_for_param, wait_until
 from roslab.graph import node_pid, subscribers
 
 STAYS_UP_S = 5.0
@@ -33,8 +33,7 @@ def model_launch(ros_master, tmp_path):
         return process
 
     yield start
-    for process in started:
-        process.stop()
+    stop_together(started)
 
 
 def rviz_subscribed(master_uri):
