@@ -80,6 +80,7 @@ from tf2_msgs.msg import TFMessage
 
 from master_reconnect import keep_registered
 from stop_request import StopRequest
+from stop_request.closed_topic import shutting_down
 from tb3_sim.core.diff_drive import validate_command
 from tb3_sim.core.errors import BadRequestError, SimError
 from tb3_sim.core.geometry import Pose2D
@@ -268,7 +269,7 @@ class SimNode:
                 for publisher, message in outgoing:
                     publisher.publish(message)
             except rospy.ROSException:
-                if rospy.is_shutdown():
+                if shutting_down():
                     return   # Ctrl-C closed the publishers after the loop's shutdown check
                 raise
             if self._clock.ticked(now_s):

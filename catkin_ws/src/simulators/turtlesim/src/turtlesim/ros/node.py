@@ -37,6 +37,7 @@ from std_srvs.srv import Empty, EmptyResponse
 
 from master_reconnect import keep_registered
 from stop_request import StopRequest
+from stop_request.closed_topic import shutting_down
 from turtlesim.core.constants import BACKGROUND_PARAMS, DEFAULT_BACKGROUND, TICK_INTERVAL_MS
 from turtlesim.core.errors import InvalidNameError, TurtleSimError, UnknownTurtleError
 from turtlesim.core.simulation import TurtleSim
@@ -137,7 +138,7 @@ class TurtleSimNode:
                 for name, result in results:
                     self._turtles[name].publish(result)
             except rospy.ROSException:
-                if rospy.is_shutdown():
+                if shutting_down():
                     return False   # Ctrl-C closed the publishers after the shutdown check above
                 raise
             if self._canvas is not None:
