@@ -30,7 +30,7 @@ def test_a_closed_topic_after_shutdown_returns_false_without_raising():
     # rospy's shutdown cannot be undone in a process, so it happens in a child of its own.
     child = textwrap.dedent("""
         import rospy
-        from stop_request.closed_topic import publish_unless_shut_down, shutting_down
+        from stop_request.closed_topic import publish_unless_shut_down
         def closed_topic(_message):
             raise rospy.ROSException("publish() to a closed topic")
         rospy.signal_shutdown("Ctrl-C")
