@@ -6,9 +6,11 @@ import time
 
 import pytest
 
-from roslab import wait_for_topic
+from roslab import wait_for_topic, wait_until
+from roslab.waiting import WaitTimeout
 
 SETTLE_S = 15.0
+ECHO_TIMEOUT_S = 30.0
 
 
 def pose(probe, turtle):
@@ -54,11 +56,19 @@ def test_turtle2_catches_turtle1(demo):
 
 
 def test_tf_echo_prints_the_transform(demo):
+    """tf_echo prints the transform once both broadcasters run; on a loaded machine turtle1's may take more than
+    the few seconds a fixed wait gave it (in one fresh-clone run, over 6 s), so the wait is for the output."""
     ros_master, _ = demo
     echo = ros_master.rosrun("tf", "tf_echo", "turtle1", "turtle2")
-    time.sleep(4)
+
+    def printed():
+        return "At time" in echo.output() and "- Translation:" in echo.output()
+    try:
+        wait_until(lambda: printed() or not echo.running(), ECHO_TIMEOUT_S, "tf_echo to print the transform")
+    except WaitTimeout:
+        pass   # the assertion below shows what tf_echo printed instead
     echo.stop()
-    assert "At time" in echo.output() and "- Translation:" in echo.output(), echo.output()[-1000:]
+    assert printed(), echo.output()[-1000:]
 
 
 def test_view_frames_writes_the_graph(demo, tmp_path):
