@@ -1,7 +1,9 @@
 """`roslaunch turtlebot3_description turtlebot3_model.launch` (under a virtual display): the model from
 TURTLEBOT3_MODEL or waffle when it is unset, joint_state_publisher and robot_state_publisher giving every link a
 TF frame, and rviz loading rviz/model.rviz and staying up; model:= and multi_robot_name:= as in the original."""
+import re
 import time
+import warnings
 
 import pytest
 import rosgraph
@@ -11,14 +13,24 @@ from roslab.graph import node_pid, subscribers
 
 STAYS_UP_S = 5.0
 TF_ECHO_DECIMALS = 0.0011
+RVIZ_SEGFAULT = re.compile(r"\[rviz-\d+\] process has died \[pid \d+, exit code -11\b")
+SEGFAULT_RETRIES = 1
 
 
 @pytest.fixture
 def model_launch(ros_master, tmp_path):
-    """Start turtlebot3_model.launch with `args` under xvfb-run, TURTLEBOT3_MODEL unset; ended after the test."""
+    """start(*args, stays_up_s=0): turtlebot3_model.launch with `args` under xvfb-run, TURTLEBOT3_MODEL unset,
+    returned once rviz has subscribed and then stayed up `stays_up_s`; ended after the test.
+
+    rviz draws here with Debian 12's Mesa software renderer (llvmpipe) in Xvfb, which on a loaded machine
+    segfaults now and then within rviz's first seconds: in 1 of 48 starts when the rviz test modules ran in a
+    loop on three workers, and in 2 of 33 fresh-clone runs of the suite. Its core dump shows a pointer inside
+    swrast_dri.so overwritten with rendered pixels (0xff303030, rviz's background colour). Such a start is
+    launched once more, with a warning in the test summary; a second segfault, or rviz exiting any other way,
+    fails the test."""
     started = []
 
-    def start(*args):
+    def launch(args, stays_up_s):
         # A previous test's parameters stay on the master, as after any roslaunch.
         master = rosgraph.Master("/test", master_uri=ros_master.uri)
         if master.hasParam("/robot_description"):
@@ -28,12 +40,31 @@ def model_launch(ros_master, tmp_path):
                    "turtlebot3_model.launch", *args]
         process = RosProcess(command, env, tmp_path / "model{}.log".format(len(started)))
         started.append(process)
-        wait_until(lambda: rviz_subscribed(ros_master.uri) or not process.running(), 90, "rviz to subscribe")
-        assert process.running(), process.output()[-3000:]
+        wait_until(lambda: rviz_subscribed(ros_master.uri) or rviz_segfault(process) or not process.running(), 90,
+                   "rviz to subscribe")
+        if not rviz_segfault(process):
+            time.sleep(stays_up_s)
+        return process
+
+    def start(*args, stays_up_s=0.0):
+        process = launch(args, stays_up_s)
+        for _ in range(SEGFAULT_RETRIES):
+            crash = rviz_segfault(process)
+            if not crash:
+                break
+            warnings.warn("rviz segfaulted in Mesa's software renderer and was launched again: " + crash.group(0))
+            process.stop()
+            process = launch(args, stays_up_s)
+        assert process.running() and not rviz_segfault(process), process.output()[-3000:]
         return process
 
     yield start
     stop_together(started)
+
+
+def rviz_segfault(launch):
+    """roslaunch's line reporting that rviz was killed by SIGSEGV (exit code -11), or None."""
+    return RVIZ_SEGFAULT.search(launch.output())
 
 
 def rviz_subscribed(master_uri):
@@ -54,10 +85,8 @@ def robot_description(master_uri):
 
 
 def test_default_model_is_waffle_and_everything_stays_up(model_launch, ros_master, tf_echo):
-    launch = model_launch()
+    model_launch(stays_up_s=STAYS_UP_S)   # fails unless the launch and its rviz are still up after it
     assert '<robot name="turtlebot3_waffle"' in robot_description(ros_master.uri)
-    time.sleep(STAYS_UP_S)
-    assert launch.running(), launch.output()[-3000:]
     for node in ("/rviz", "/robot_state_publisher", "/joint_state_publisher"):
         assert responds(ros_master.uri, node), node
     # The wheel frames need joint_state_publisher's /joint_states: robot_state_publisher publishes them on /tf.
