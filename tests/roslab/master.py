@@ -65,6 +65,7 @@ class RosMaster:
                         ROS_HOME=str(workdir), ROS_LOG_DIR=str(workdir / "log"), PYTHONUNBUFFERED="1")
         self.env.pop("ROS_IP", None)
         self._processes = []
+        self.core = []   # until the core has started: shutdown() then ends whatever did start, side by side
         try:
             self.core = self._start_core()
         except BaseException:   # Ctrl-C or a timeout while the core starts: nothing may outlive the test
@@ -126,9 +127,8 @@ class RosMaster:
     def shutdown(self):
         """End every process this master started: the nodes, launch files and probes side by side, then roscore's
         rosout and rosmaster, which the others need while they unregister."""
-        core = getattr(self, "core", [])   # unset when the core failed to start
-        stop_together(process for process in reversed(self._processes) if process not in core)
-        for process in reversed(core):
+        stop_together(process for process in reversed(self._processes) if process not in self.core)
+        for process in reversed(self.core):
             process.stop()
 
 
