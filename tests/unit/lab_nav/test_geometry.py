@@ -1,5 +1,6 @@
 """MapGeometry: cells and world coordinates as nav_msgs/MapMetaData lays them out."""
 import pytest
+
 from lab_nav.maps.geometry import MapGeometry
 
 TB3_MAP = MapGeometry(resolution=0.05, width=384, height=384, origin_x=-10.0, origin_y=-10.0)
