@@ -133,7 +133,8 @@ def latched_grid(ros_master, topic, cells, **geometry):
 
 
 def info_lines(output):
-    return [match.group(1) for match in re.finditer(r"\[INFO\] \[[\d.]+\]: (.*)", output)]
+    """The INFO lines' texts; the lines are in roscpp's format, as the C++ originals print them."""
+    return [match.group(1) for match in re.finditer(r"^\[ INFO\] \[\d+\.\d{9}\]: (.*)$", output, re.MULTILINE)]
 
 
 def test_rosrun_map_server_serves_the_yaml_latched_once_on_an_anonymous_node(ros_master, maps, probe):
