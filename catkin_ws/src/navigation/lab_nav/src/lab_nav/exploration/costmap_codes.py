@@ -29,3 +29,25 @@ TRANSLATION_TABLE = _translation_table()
 def costmap_codes(occupancy):
     """uint8 costmap codes of an array of OccupancyGrid values (int8 or ints in -128..127), same shape."""
     return TRANSLATION_TABLE[np.asarray(occupancy).astype(np.int8).view(np.uint8)]
+
+
+def apply_update(codes, x, y, width, height, values):
+    """Write a map_msgs/OccupancyGridUpdate (origin cell x, y; width x height values, row-major) into `codes`
+    (uint8, (rows, cols)) in place, as explore_lite's costmap client does; returns the warning or error it would
+    log, or None. Negative coordinates, and data that do not hold width x height values, are refused. Parts
+    beyond the grid are cut off, and the values are taken in order for the cells that remain (so a clipped
+    update's rows shift, as in the original)."""
+    if x < 0 or y < 0:
+        return "negative coordinates, invalid update. x: {}, y: {}".format(x, y)
+    rows, cols = codes.shape
+    x_end, y_end = x + width, y + height
+    warning = None
+    if x_end > cols or x > cols or y_end > rows or y > rows:
+        warning = ("received update doesn't fully fit into existing map, only part will be copied. received: "
+                   "[{}, {}], [{}, {}] map is: [0, {}], [0, {}]".format(x, x_end, y, y_end, cols, rows))
+    if len(values) != width * height:
+        return "invalid update: {} x {} cells but {} values".format(width, height, len(values))
+    kept_cols, kept_rows = max(0, min(x_end, cols) - x), max(0, min(y_end, rows) - y)
+    taken = costmap_codes(np.asarray(values[:kept_cols * kept_rows], dtype=np.int64))
+    codes[y:y + kept_rows, x:x + kept_cols] = taken.reshape(kept_rows, kept_cols)
+    return warning
