@@ -53,7 +53,7 @@ class FrontierSearch:
     (a MapGeometry) with explore_lite's potential_scale, gain_scale and min_frontier_size (m)."""
 
     def __init__(self, codes, geometry, potential_scale, gain_scale, min_frontier_size):
-        self._codes = np.asarray(codes, dtype=np.uint8).ravel()
+        self._codes = np.asarray(codes, dtype=np.uint8).tobytes()   # bytes: fast int indexing in the searches
         self._geometry = geometry
         self._width, self._height = geometry.width, geometry.height
         self._potential_scale = potential_scale
@@ -102,9 +102,10 @@ class FrontierSearch:
         return None
 
     def _is_new_frontier_cell(self, index, frontier_flag):
-        if self._codes[index] != NO_INFORMATION or frontier_flag[index]:
+        codes = self._codes
+        if codes[index] != NO_INFORMATION or frontier_flag[index]:
             return False
-        return any(self._codes[neighbour] == FREE_SPACE for neighbour in self._nhood4(index))
+        return any(codes[neighbour] == FREE_SPACE for neighbour in self._nhood4(index))
 
     def _build_frontier(self, seed, reference, frontier_flag):
         frontier = Frontier(initial=self._centre(seed))
@@ -143,18 +144,19 @@ class FrontierSearch:
         message = None
         if start is None:
             start, message = position, NO_CLEAR_CELL
-        frontier_flag = np.zeros(self._codes.size, bool)
-        visited = np.zeros(self._codes.size, bool)
+        frontier_flag = bytearray(len(self._codes))
+        visited = bytearray(len(self._codes))
         visited[start] = True
         queue = deque([start])
         frontiers = []
+        codes = self._codes
         while queue:
             index = queue.popleft()
             for neighbour in self._nhood4(index):
-                if self._codes[neighbour] <= self._codes[index] and not visited[neighbour]:
+                if codes[neighbour] <= codes[index] and not visited[neighbour]:
                     visited[neighbour] = True
                     queue.append(neighbour)
-                elif self._is_new_frontier_cell(neighbour, frontier_flag):
+                elif codes[neighbour] == NO_INFORMATION and self._is_new_frontier_cell(neighbour, frontier_flag):
                     frontier_flag[neighbour] = True
                     frontier = self._build_frontier(neighbour, position, frontier_flag)
                     if frontier.size * self._geometry.resolution >= self._min_frontier_size:
