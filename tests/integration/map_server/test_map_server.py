@@ -195,6 +195,19 @@ def test_a_launch_name_and_frame_id_are_used(ros_master, maps, probe):
         server.stop()
 
 
+def test_the_deprecated_image_and_resolution_form_warns_and_uses_origin_zero(ros_master, maps, probe):
+    server = start_map_server(ros_master, str(maps / "room.pgm"), "0.1", "_negate:=1")
+    try:
+        grid = fresh(probe).wait_for_message("/map", timeout_s=30)
+        # negated: white 254 reads as 1 (occupied), black as 255 (free), and grey 205 as 50, which is occupied too
+        assert cells(grid) == [[{0: 100, 100: 0, -1: 100}[cell] for cell in row] for row in ROOM_CELLS]
+        assert (grid["info"]["resolution"], grid["info"]["origin"]["position"]["x"]) == (pytest.approx(0.1), 0.0)
+        assert "[ WARN]" in server.output()
+        assert "Using deprecated map server interface. Please switch to new interface." in server.output()
+    finally:
+        server.stop()
+
+
 @pytest.mark.parametrize("yaml_text, args, message", [
     (None, ["missing.yaml"], "Map_server could not open {folder}/missing.yaml."),
     (ROOM_YAML.replace("resolution: 0.05\n", ""), ["bad.yaml"],
@@ -249,6 +262,18 @@ def test_map_saver_follows_a_remapped_topic(ros_master, tmp_path):
         assert (tmp_path / "other.pgm").read_bytes() == b"P5\n# CREATOR: map_saver.cpp 0.100 m/pix\n2 1\n255\n\x00\xfe"
         assert "origin: [0.000000, 0.000000, 0.000000]" in (tmp_path / "other.yaml").read_text()
     finally:
+        publisher.stop()
+
+
+def test_map_saver_that_cannot_write_says_so_and_keeps_waiting(ros_master, tmp_path):
+    publisher = latched_grid(ros_master, "/map", SAVED_CELLS)
+    saver = ros_master.rosrun("map_server", "map_saver", "-f", str(tmp_path / "no_such_folder" / "map"))
+    try:
+        wait_until(lambda: "Couldn't save map file to {}".format(tmp_path / "no_such_folder" / "map.pgm")
+                   in saver.output(), 30, "the write error")
+        assert saver.running()
+    finally:
+        saver.stop()
         publisher.stop()
 
 
