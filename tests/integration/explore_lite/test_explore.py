@@ -75,7 +75,7 @@ def test_explore_launch_sends_the_cheapest_frontier_then_the_next_then_stops(ros
     move_base = ros_master.start([sys.executable, "-c", STAND_IN_MOVE_BASE], "move_base")
     explore = ros_master.roslaunch("explore_lite", "explore.launch")
     try:
-        wait_until(lambda: "Exploration stopped." in explore.output(), 60, "exploration to stop")
+        wait_until(lambda: "Exploration stopped." in explore.output(), 180, "exploration to stop")
         output = explore.output()
         lines = [re.sub(r"^\[[ A-Z]+\] \[[\d.]+\]: ", "", line) for line in output.splitlines()]
         start_up = ["Waiting for costmap to become available, topic: map", "Waiting to connect to move_base server",
@@ -110,5 +110,5 @@ def test_explore_launch_sends_the_cheapest_frontier_then_the_next_then_stops(ros
 
 def test_a_bad_parameter_is_an_error_naming_it(ros_master):
     explore = ros_master.rosrun("explore_lite", "explore", "_planner_frequency:=0")
-    assert explore.popen.wait(timeout=30) == 1
+    assert explore.popen.wait(timeout=90) == 1
     assert "~planner_frequency must be a positive number, got 0" in explore.output()
