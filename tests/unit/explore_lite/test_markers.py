@@ -17,7 +17,8 @@ def test_each_frontier_gets_its_points_and_a_sphere_at_its_seed():
         (0, Marker.POINTS, Marker.ADD, "frontiers"), (1, Marker.SPHERE, Marker.ADD, "frontiers"),
         (2, Marker.POINTS, Marker.ADD, "frontiers"), (3, Marker.SPHERE, Marker.ADD, "frontiers")]
     assert [(p.x, p.y) for p in markers[0].points] == [(1.0, 2.05), (1.0, 2.1)]
-    assert (markers[0].color.b, markers[2].color.r) == (1.0, 1.0)          # blue; red when blacklisted
+    # blue, and red when blacklisted
+    assert (markers[0].color.r, markers[0].color.b, markers[2].color.r, markers[2].color.b) == (0, 1, 1, 0)
     assert (markers[1].pose.position.x, markers[1].pose.position.y, markers[1].color.g) == (1.0, 2.0, 1.0)
     assert markers[0].scale.x == 0.1
     assert markers[1].scale.x == 0.4                                        # min(|0.4 * -1 / -1|, 0.5)
