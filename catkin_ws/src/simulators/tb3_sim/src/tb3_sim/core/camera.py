@@ -2,8 +2,9 @@
 
 The world is a floor plan: vertical walls (segments) and vertical cylinders (circles), each standing on the floor
 up to its own height, plus a floor and a sky. The floor is one flat colour (Gazebo's ground plane) or, for a world
-with a floor layer, its texture seen in perspective (`use_floor`, core.floor_texture). The camera is level (no pitch, no roll) at `mount_height_m` above
-the floor, looking along `yaw` in the world's x-y plane (x ahead, y left, z up; yaw CCW from +x, radians).
+with a floor layer, its texture seen in perspective (`use_floor`, core.floor_texture). The camera is level (no
+pitch, no roll) at `mount_height_m` above the floor, looking along `yaw` in the world's x-y plane (x ahead, y left,
+z up; yaw CCW from +x, radians).
 
 What Gazebo does and this module copies (turtlebot3_description `turtlebot3_waffle.gazebo.xacro`, sensor
 `realsense_R200` of type depth with `libgazebo_ros_openni_kinect.so`; gazebo_ros_pkgs `gazebo_ros_camera_utils.cpp`
