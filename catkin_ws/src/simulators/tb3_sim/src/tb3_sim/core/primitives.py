@@ -81,6 +81,35 @@ _DATA = {
 }
 
 
+def _rings_extent(primitive):
+    return np.vstack(primitive.rings)
+
+
+def _image_corners(image):
+    (sx, sy), yaw = image.size, np.radians(image.yaw_deg)
+    corners = np.array(((-sx, -sy), (sx, -sy), (sx, sy), (-sx, sy))) / 2.0
+    rotation = np.array(((np.cos(yaw), np.sin(yaw)), (-np.sin(yaw), np.cos(yaw))))
+    return corners @ rotation + image.center
+
+
+# Points whose bounding box contains each kind of primitive (a stroke's half width and a text's size aside).
+_EXTENT_POINTS = {
+    FilledPolygon: _rings_extent,
+    Polyline: lambda p: np.asarray(p.points, dtype=float),
+    Disc: lambda p: np.asarray(p.center) + np.array(((-p.radius, -p.radius), (p.radius, p.radius))),
+    Text: lambda p: np.asarray([p.position], dtype=float),
+    Image: _image_corners,
+}
+
+
+def primitives_extent(primitives):
+    """(x_min, y_min, x_max, y_max) over `primitives`, or None if there are none."""
+    if not primitives:
+        return None
+    points = np.vstack([_EXTENT_POINTS[type(p)](p) for p in primitives])
+    return (*points.min(axis=0), *points.max(axis=0))
+
+
 def to_data(primitive):
     """{"kind": class name, ...fields} with lists for tuples, ready for JSON."""
     return {"kind": type(primitive).__name__, **_DATA[type(primitive)](primitive)}
