@@ -10,6 +10,8 @@ closed set, world frame, metres, colours (r, g, b) 0-255. A scene is a sequence 
 - Image: RGB pixels (row 0 at +y) covering `size` m centred on `center`, turned by `yaw_deg`.
 
 `to_data(primitive)` is the JSON-ready form a browser receives (kind name plus fields; images as PNG data URLs).
+A colour may be None in data meant for several views: "the view's own colour for walls" (a static shape that the
+world file gave no colour).
 """
 
 import base64
@@ -64,7 +66,7 @@ def _image_data(image):
     import cv2  # about 0.4 s: paid only when an image is sent
 
     png = cv2.imencode(".png", np.ascontiguousarray(image.pixels[:, :, ::-1]))[1].tobytes()
-    return {"src": "data:image/png;base64," + base64.b64encode(png).decode("ascii"), "center": list(image.center),
+    return {"src": "data:image/png;base64," + base64.b64encode(png).decode("ascii"), "center": _point(image.center),
             "size": list(image.size), "yaw_deg": image.yaw_deg}
 
 
@@ -72,11 +74,23 @@ def _fields(primitive):
     return {name: getattr(primitive, name) for name in primitive.__dataclass_fields__}
 
 
+# Coordinates travel rounded to 0.1 mm.
+_DECIMALS = 4
+
+
+def _point(point):
+    return [round(float(point[0]), _DECIMALS), round(float(point[1]), _DECIMALS)]
+
+
+def _rgb(rgb):
+    return None if rgb is None else [int(channel) for channel in rgb]
+
+
 _DATA = {
-    FilledPolygon: lambda p: {"rings": [[list(point) for point in ring] for ring in p.rings], "rgb": list(p.rgb)},
-    Polyline: lambda p: {**_fields(p), "points": [list(point) for point in p.points], "rgb": list(p.rgb)},
-    Disc: lambda p: {**_fields(p), "center": list(p.center), "rgb": list(p.rgb)},
-    Text: lambda p: {**_fields(p), "position": list(p.position), "rgb": list(p.rgb)},
+    FilledPolygon: lambda p: {"rings": [[_point(point) for point in ring] for ring in p.rings], "rgb": _rgb(p.rgb)},
+    Polyline: lambda p: {**_fields(p), "points": [_point(point) for point in p.points], "rgb": _rgb(p.rgb)},
+    Disc: lambda p: {**_fields(p), "center": _point(p.center), "rgb": _rgb(p.rgb)},
+    Text: lambda p: {**_fields(p), "position": _point(p.position), "rgb": _rgb(p.rgb)},
     Image: _image_data,
 }
 
