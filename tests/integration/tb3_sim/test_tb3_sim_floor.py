@@ -30,7 +30,7 @@ def sim(ros_master):
     ros_master.roslaunch("tb3_sim", "tb3_sim.launch", f"world:={WORLD}", "gui:=false", f"x_pos:={SPAWN[0]}",
                          f"y_pos:={SPAWN[1]}", f"camera_width:={WIDTH}", f"camera_height:={HEIGHT}",
                          "real_time_factor:=5")
-    wait_for_topic(ros_master.uri, "/odom")
+    wait_for_topic(ros_master.uri, "/odom", timeout_s=60)
     wait_for_service(ros_master.uri, "/gazebo/get_world_properties")
 
 

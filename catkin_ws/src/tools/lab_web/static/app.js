@@ -88,6 +88,7 @@ const labView = {
   errors: [],
   robot: null,
   models: [],
+  scenePrimitives: 0,        // how many scene primitives the latest world frame brought
 };
 window.labView = labView;
 
@@ -193,6 +194,7 @@ function onHello(frame) {
 function onWorld(frame) {
   app.world = frame;
   labView.models = Array.isArray(frame.models) ? frame.models : [];
+  labView.scenePrimitives = Array.isArray(frame.scene) ? frame.scene.length : 0;
   if (app.selectedModel && !findModel(app.selectedModel)) app.selectedModel = null;
   if (app.mouse && app.mouse.model && !findModel(app.mouse.model.name)) app.mouse = null;
   updateView();

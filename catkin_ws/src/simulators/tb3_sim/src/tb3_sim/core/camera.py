@@ -296,12 +296,18 @@ class CameraRenderer:
         return CameraFrame(rgb, depth_image)
 
     def _draw_floor(self, spans, x, y, yaw, rgb, depth):
-        """Copies the sampled floor into the rows below the horizon where no object covers it."""
+        """Puts the sampled floor into the rows below the horizon where no object covers it (straight into the image
+        when nothing reaches below the horizon, as on an open floor)."""
+        import cv2
+
         first = self._floor_row
         if first >= self.intrinsics.height:
             return
-        import cv2
-
+        if not np.any(spans.end > first):
+            floor = self._floor_sampler.sample(x, y, yaw, inside=depth is not None, out=rgb[first:])
+            if depth is not None:
+                depth[first:][floor.inside == 0] = np.nan
+            return
         floor = self._floor_sampler.sample(x, y, yaw, inside=depth is not None)
         bare = self._bare_floor(spans)
         cv2.copyTo(floor.rgb, bare, rgb[first:])

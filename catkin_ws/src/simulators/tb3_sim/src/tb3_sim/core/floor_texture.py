@@ -118,18 +118,20 @@ class FloorSampler:
                               forward))
         return to_image @ to_world
 
-    def sample(self, x, y, yaw, inside=False):
-        """The FloorView from a camera at world (x, y) looking along `yaw` (rad)."""
+    def sample(self, x, y, yaw, inside=False, out=None):
+        """The FloorView from a camera at world (x, y) looking along `yaw` (rad); its rgb is `out` (a C-contiguous
+        (rows, W, 3) uint8 array, e.g. the image's rows below the horizon) if given, else a reused buffer."""
         import cv2
 
         width = self.intrinsics.width
+        rgb = self._rgb if out is None else out
         for level, first, end in self._bands:
             homography = self._homography(x, y, yaw, level, first)
-            cv2.warpPerspective(self.texture.levels[level], homography, (width, end - first), dst=self._rgb[first:end],
+            cv2.warpPerspective(self.texture.levels[level], homography, (width, end - first), dst=rgb[first:end],
                                 flags=cv2.INTER_LINEAR, borderMode=cv2.BORDER_CONSTANT,
                                 borderValue=self.texture.border)
             if inside:
                 cv2.warpPerspective(self._ones[level], homography, (width, end - first),
                                     dst=self._inside[first:end], flags=cv2.INTER_NEAREST,
                                     borderMode=cv2.BORDER_CONSTANT, borderValue=0)
-        return FloorView(self._rgb, self._inside if inside else None)
+        return FloorView(rgb, self._inside if inside else None)
