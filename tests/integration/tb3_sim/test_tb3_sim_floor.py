@@ -52,7 +52,7 @@ def camera(ros_master, sim, tmp_path_factory):
 
 def test_static_models_are_listed_by_name(ros_master, camera):
     probe, _ = camera
-    names = ["ground_plane", "navigation", "arena_walls", "turtlebot3_waffle"]
+    names = ["navigation", "arena_walls", "turtlebot3_waffle"]   # no ground_plane: the floor model is the ground
     assert probe.wait_for_message("/gazebo/model_states")["name"] == names
     rospy.init_node("floor_world_test", anonymous=True, disable_signals=True)
     properties = rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)()

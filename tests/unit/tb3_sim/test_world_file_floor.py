@@ -53,7 +53,7 @@ def test_static_models_are_listed_by_name_and_their_shapes_are_the_worlds():
     assert [len(m.shapes) for m in world.static_models] == [1, 2]
     assert len(world.static_shapes) == 3
     names = World(world, robot_name="turtlebot3_waffle").model_names()
-    assert names == ["ground_plane", "navigation", "arena_walls", "turtlebot3_waffle"]
+    assert names == ["navigation", "arena_walls", "turtlebot3_waffle"]   # the floor model is the ground
 
 
 def test_box_static_shape_is_the_rectangle_gazebo_gives():
@@ -179,3 +179,8 @@ def test_bad_floor_and_static_model_data_names_the_file_and_key(tmp_path, data, 
         load_world(path)
     assert caught.value.key == key
     assert str(path) in str(caught.value) and key in str(caught.value)
+
+
+def test_a_world_without_a_floor_layer_keeps_gazebos_ground_plane():
+    world = World(parse_world({"name": "w", "static_models": [{"name": "walls", "static": []}]}), robot_name=None)
+    assert world.model_names() == ["ground_plane", "walls"]

@@ -15,7 +15,8 @@ Format (every key is checked; unknown keys and bad values raise `WorldFileError`
     static_models:             # optional, instead of static_model + static: several named static models, each
       - name: navigation       # listed in /gazebo/model_states at pose 0 in this order
         static: [...]          # static shapes as under `static:`
-    floor:                     # optional; omitted: Gazebo's infinite grey ground plane
+    floor:                     # optional; omitted: Gazebo's infinite grey ground plane (model `ground_plane`);
+                               # given: the floor model is the ground and no `ground_plane` is listed
       size: [sx, sy]           # the visible floor rectangle, m; outside it a camera sees the background grey
       center: [x, y]           # optional, default [0, 0]
       color: white             # optional base colour, default white
