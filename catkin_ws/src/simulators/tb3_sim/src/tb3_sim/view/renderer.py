@@ -13,6 +13,7 @@ that every view draws, painted by view.primitive_painter.
 """
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 from PyQt5.QtCore import QLineF, QPointF, Qt
 from PyQt5.QtGui import QBrush, QColor, QImage, QPainter, QPen, QPolygonF, QTransform
@@ -147,7 +148,14 @@ def _rgb(colour):
 
 def _fixed_primitives(scene):
     """The floor layer and the static shapes, in their colours (the view's grey by default)."""
-    return scene_primitives(scene.floor, scene.static_shapes, _rgb(STATIC_FILL))
+    return list(_fixed_primitives_of(scene.floor, scene.static_shapes))
+
+
+@lru_cache(maxsize=4)
+def _fixed_primitives_of(floor, static_shapes):
+    """Memoised: the window repaints at REPAINT_HZ, and flattening a detailed floor's curves and dashes takes
+    milliseconds; the fixed scene never changes while a world runs."""
+    return tuple(scene_primitives(floor, static_shapes, _rgb(STATIC_FILL)))
 
 
 def _model_primitives(scene):
