@@ -144,6 +144,7 @@ M = "floor.markings[0]"
     (_marking(type="rectangle", center=[0, 0], size=[1, 1], dash=[0.1, 0.1]), f"{M}.dash", "only with `width`"),
     (_marking(type="polygon", points=[[0, 0], [1, 1], [1, 0], [0, 1]]), f"{M}.points", "simple"),
     (_marking(type="polygon", points=[[0, 0], [1, 1]]), f"{M}.points", "3 to"),
+    (_marking(type="polygon", points=[[i, i % 2] for i in range(501)]), f"{M}.points", "3 to 500"),
     (_marking(type="circle", center=[0, "a"], radius=1), f"{M}.center[1]", "finite number"),
     (_marking(type="circle", center=[0, 0], radius=1, width=-0.1), f"{M}.width", "> 0"),
     (_marking(type="arc", center=[0, 0], radius=1, start_deg=0, end_deg=90), f"{M}.width", "missing"),

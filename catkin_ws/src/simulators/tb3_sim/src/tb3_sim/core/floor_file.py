@@ -3,8 +3,8 @@
 Each marking kind is one row of MARKING_KINDS: its keys (True = required) and the function that builds it, so a
 new kind is one function and one row. Errors go through the world file's reader, so they name the file and the
 key (e.g. `floor.markings[3].width`). Untrusted input is bounded: at most MAX_MARKINGS markings of at most
-MAX_MARKING_POINTS points, texts of at most MAX_TEXT_CHARS characters, images of at most MAX_IMAGE_SIDE_PX pixels
-a side and MAX_IMAGE_BYTES bytes.
+MAX_MARKING_POINTS points (MAX_POLYGON_POINTS for a polygon), texts of at most MAX_TEXT_CHARS characters, images
+of at most MAX_IMAGE_SIDE_PX pixels a side and MAX_IMAGE_BYTES bytes.
 """
 
 import math
@@ -30,6 +30,8 @@ from tb3_sim.core.floor import (
 
 MAX_MARKINGS = 10000
 MAX_MARKING_POINTS = 2000
+# A polygon's simplicity check compares every pair of edges.
+MAX_POLYGON_POINTS = 500
 MAX_TEXT_CHARS = 200
 MAX_IMAGE_SIDE_PX = 4096
 MAX_IMAGE_BYTES = 64 * 1024 * 1024
@@ -84,11 +86,10 @@ class _Item:
     def colour(self):
         return self.reader.colour(self.item, self.key)
 
-    def points(self, minimum):
+    def points(self, minimum, maximum=MAX_MARKING_POINTS):
         value, where = self.item["points"], self.at("points")
-        if not isinstance(value, list) or not minimum <= len(value) <= MAX_MARKING_POINTS:
-            self.reader.fail(where, f"expected a list of {minimum} to {MAX_MARKING_POINTS} [x, y] points, got "
-                                    f"{_short(value)}")
+        if not isinstance(value, list) or not minimum <= len(value) <= maximum:
+            self.reader.fail(where, f"expected a list of {minimum} to {maximum} [x, y] points, got {_short(value)}")
         return tuple(self.reader.numbers(p, f"{where}[{i}]", 2) for i, p in enumerate(value))
 
     def stroke(self, required, arrow=False):
@@ -121,7 +122,7 @@ def _rectangle(item):
 
 
 def _polygon(item):
-    points = item.points(3)
+    points = item.points(3, MAX_POLYGON_POINTS)
     if not _is_simple(points):
         item.reader.fail(item.at("points"), "polygon must be simple: its edges may not cross or overlap")
     return PolygonMarking(points, item.colour(), item.stroke(required=False))
