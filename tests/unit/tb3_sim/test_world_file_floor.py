@@ -158,6 +158,8 @@ M = "floor.markings[0]"
      f"{M}.arrow", "no ends"),
     (_marking(type="polyline", points=[[0, 0], [1, 0]], width=0.1, closed="yes"), f"{M}.closed", "true or false"),
     (_marking(type="polyline", points=[[0, 0], [1, 0]], width=0.1, dash=[0.1]), f"{M}.dash", "2 numbers"),
+    (_marking(type="circle", center=[0, 0], radius=100, width=0.1, dash=[0.01, 0.01]), f"{M}.dash",
+     "at most 20000"),
     (_marking(type="curve", points=[[0, 0], [1, 0], [1, 1], [2, 2], [3, 3]], width=0.1), f"{M}.points",
      r"3n \+ 1"),
     (_marking(type="text", text="", position=[0, 0], height=0.1), f"{M}.text", "printable text"),

@@ -3,8 +3,8 @@
 Each marking kind is one row of MARKING_KINDS: its keys (True = required) and the function that builds it, so a
 new kind is one function and one row. Errors go through the world file's reader, so they name the file and the
 key (e.g. `floor.markings[3].width`). Untrusted input is bounded: at most MAX_MARKINGS markings of at most
-MAX_MARKING_POINTS points (MAX_POLYGON_POINTS for a polygon), texts of at most MAX_TEXT_CHARS characters, images
-of at most MAX_IMAGE_SIDE_PX pixels a side and MAX_IMAGE_BYTES bytes.
+MAX_MARKING_POINTS points (MAX_POLYGON_POINTS for a polygon) and MAX_DASHES dashes, texts of at most
+MAX_TEXT_CHARS characters, images of at most MAX_IMAGE_SIDE_PX pixels a side and MAX_IMAGE_BYTES bytes.
 """
 
 import math
@@ -33,6 +33,7 @@ MAX_MARKING_POINTS = 2000
 # A polygon's simplicity check compares every pair of edges.
 MAX_POLYGON_POINTS = 500
 MAX_TEXT_CHARS = 200
+MAX_DASHES = 20000
 MAX_IMAGE_SIDE_PX = 4096
 MAX_IMAGE_BYTES = 64 * 1024 * 1024
 DEFAULT_FLOOR_COLOUR = "white"
@@ -59,7 +60,29 @@ def parse_floor(reader, value, key, base_dir):
 
 def _marking(reader, item, key):
     kind = reader.kind(item, key, {kind: keys for kind, (keys, _) in MARKING_KINDS.items()})
-    return MARKING_KINDS[kind][1](_Item(reader, item, key))
+    marking = MARKING_KINDS[kind][1](_Item(reader, item, key))
+    stroke = getattr(marking, "stroke", None)
+    if stroke is not None and stroke.dash is not None:
+        dashes = _PATH_LENGTH[type(marking)](marking) / sum(stroke.dash)
+        if dashes > MAX_DASHES:
+            reader.fail(f"{key}.dash", f"{dashes:.0f} dashes along this path; at most {MAX_DASHES}")
+    return marking
+
+
+def _polyline_length(points, closed=False):
+    path = np.asarray(points + (points[0],) if closed else points, dtype=float)
+    return float(np.hypot(*np.diff(path, axis=0).T).sum())
+
+
+# Length of each stroked path in metres (for a curve, of its control polygon, which is never shorter).
+_PATH_LENGTH = {
+    RectangleMarking: lambda m: 2.0 * (m.size[0] + m.size[1]),
+    PolygonMarking: lambda m: _polyline_length(m.points, closed=True),
+    CircleMarking: lambda m: 2.0 * math.pi * m.radius,
+    ArcMarking: lambda m: m.radius * math.radians((m.end_deg - m.start_deg) % 360.0),
+    PolylineMarking: lambda m: _polyline_length(m.points, m.closed),
+    CurveMarking: lambda m: _polyline_length(m.points),
+}
 
 
 class _Item:
