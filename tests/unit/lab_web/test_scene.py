@@ -1,5 +1,6 @@
 """The page's picture of tb3_sim's world: walls and models from the world markers, LiDAR hits in the world
 frame, and the trail sent to pages a few points at a time."""
+import json
 import math
 
 import pytest
@@ -17,7 +18,9 @@ from lab_web.scene import (
     Trail,
     compose,
     scan_points,
+    scene_primitives,
     sensor_offset,
+    with_scene,
     world_content,
 )
 
@@ -105,3 +108,25 @@ def test_the_lidars_offset_is_found_through_the_fixed_transforms():
     assert sensor_offset(transforms, "base_footprint", "base_footprint") == Pose2D(0.0, 0.0, 0.0)
     assert sensor_offset(transforms, "base_footprint", "imu_link") is None
     assert sensor_offset({"a": ("b", ORIGIN), "b": ("a", ORIGIN)}, "base_footprint", "a") is None   # a loop
+
+
+FLOOR_SCENE = [{"kind": "FilledPolygon", "rings": [[[-4, -4], [4, -4], [4, 4], [-4, 4]]], "rgb": [255, 255, 0]},
+               {"kind": "Text", "text": "A", "position": [1, 1], "height": 0.2, "angle_deg": 0, "bold": False,
+                "rgb": [0, 0, 0]}]
+
+
+def test_the_scene_primitives_reach_the_page_and_widen_its_bounds_to_the_floor():
+    world = with_scene(world_content([marker("robots", CUBE, text="tb3")]), scene_primitives(json.dumps(FLOOR_SCENE)))
+    assert world["scene"] == FLOOR_SCENE
+    assert world["bounds"] == [-4.5, -4.5, 4.5, 4.5]
+
+
+def test_walls_keep_the_bounds_they_give_when_the_floor_is_smaller():
+    walls = world_content([marker("static", LINE_LIST, points=[(-6, 0), (6, 0)])])
+    assert with_scene(walls, FLOOR_SCENE)["bounds"] == [-6.5, -4.5, 6.5, 4.5]
+
+
+@pytest.mark.parametrize("text", ["not json", "{}", "[1, 2]", json.dumps([{"rgb": [0, 0, 0]}])])
+def test_a_scene_that_is_not_a_list_of_primitives_is_ignored(text):
+    assert scene_primitives(text) is None
+    assert with_scene(world_content([]), None)["scene"] is None

@@ -1,5 +1,6 @@
 """The output seam: every periodic output registered once, published at Gazebo's rates in sim time, lazy ones
 quiet without subscribers, all restarted by a reset (fake publishers, no master)."""
+import json
 from collections import Counter
 
 import pytest
@@ -16,6 +17,7 @@ from tb3_sim.ros.robot_naming import RobotNaming
 
 TOPIC_KEYS = {"/clock": "clock", "/odom": "odom", "/tf": "tf", "/joint_states": "joint_states", "/scan": "scan",
               "/imu": "imu", "~model_states": "model_states", "~world_markers": "world_markers",
+              "~scene_primitives": "scene_primitives",
               "/camera/rgb/image_raw": "rgb", "/camera/rgb/camera_info": "rgb_info",
               "/camera/rgb/image_raw/compressed": "compressed", "/camera/depth/image_raw": "depth",
               "/camera/depth/camera_info": "depth_info"}
@@ -95,7 +97,8 @@ def test_registry_order_clock_first_and_every_output_declares_topics_and_rate(wo
     registered = outputs(world).outputs
     assert isinstance(registered[0], ClockOutput)
     assert [type(o).__name__ for o in registered] == [
-        "ClockOutput", "ModelStatesOutput", "WorldMarkersOutput", "OdometryOutput", "ScanOutput", "ImuOutput",
+        "ClockOutput", "ModelStatesOutput", "WorldMarkersOutput", "ScenePrimitivesOutput",
+        "OdometryOutput", "ScanOutput", "ImuOutput",
         "CameraOutput"]
     for output in registered:
         assert isinstance(output, Output) and output.topics and output.rate_hz >= 0
@@ -144,10 +147,13 @@ def test_messages_carry_the_world_state_and_frames(world):
     assert last["model_states"].name == ["ground_plane", "ros_symbol", "turtlebot3_waffle"]
 
 
-def test_latched_world_markers_go_out_at_start_without_subscribers(world):
+def test_latched_world_markers_and_scene_go_out_at_start_without_subscribers(world):
     pairs = outputs(world, subscribed=False).latched(world)
-    assert [fake.name for fake, _ in pairs] == ["world_markers"]
+    assert [fake.name for fake, _ in pairs] == ["world_markers", "scene_primitives"]
     assert len(pairs[0][1].markers) > 1
+    scene = json.loads(pairs[1][1].data)
+    assert len(scene) == len(world.description.static_shapes)
+    assert {primitive["kind"] for primitive in scene} <= {"FilledPolygon", "Polyline", "Disc"}
 
 
 def test_reset_restarts_every_schedule_and_the_noise_stream(world):

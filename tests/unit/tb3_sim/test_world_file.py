@@ -47,7 +47,7 @@ def test_missing_file_is_a_world_file_error():
 
 
 def test_unknown_key_message_lists_the_allowed_keys():
-    with pytest.raises(WorldFileError, match="allowed: models, name, static, static_model"):
+    with pytest.raises(WorldFileError, match="allowed: floor, models, name, static, static_model, static_models"):
         parse_world({"name": "w", "colour": "red"})
 
 

@@ -88,6 +88,7 @@ const labView = {
   errors: [],
   robot: null,
   models: [],
+  scenePrimitives: 0,        // how many scene primitives the latest world frame brought
 };
 window.labView = labView;
 
@@ -193,6 +194,7 @@ function onHello(frame) {
 function onWorld(frame) {
   app.world = frame;
   labView.models = Array.isArray(frame.models) ? frame.models : [];
+  labView.scenePrimitives = Array.isArray(frame.scene) ? frame.scene.length : 0;
   if (app.selectedModel && !findModel(app.selectedModel)) app.selectedModel = null;
   if (app.mouse && app.mouse.model && !findModel(app.mouse.model.name)) app.mouse = null;
   updateView();
@@ -397,7 +399,9 @@ function drawWorld() {
   ctx.fillRect(0, 0, dom.world.width, dom.world.height);
   drawGrid(ctx);
   const world = app.world || {};
-  for (const shape of world.static || []) drawShape(ctx, shape);
+  // The floor layer and static shapes as tb3_sim's scene primitives; the markers' shapes where none came.
+  if (Array.isArray(world.scene)) drawPrimitives(ctx, world.scene);
+  else for (const shape of world.static || []) drawShape(ctx, shape);
   for (const model of world.models || []) drawModel(ctx, model);
   // world.robots (2 Hz) includes the driven robot too, drawn from /odom below: only the others are drawn here.
   const own = (app.state || {}).robot;
@@ -446,6 +450,91 @@ function tracePath(ctx, points) {
     if (i === 0) ctx.moveTo(px, py);
     else ctx.lineTo(px, py);
   });
+}
+
+/* Scene primitives (tb3_sim.core.primitives, sent as data in the world frame): one drawer per kind, so the page
+   draws every kind of floor marking without knowing any. Units are metres, colours [r, g, b]. */
+const CAP_HEIGHT_PER_EM = 0.73;   // DejaVu Sans: a Text's height is its cap height
+const sceneImages = new Map();    // data URL -> HTMLImageElement
+
+/** A primitive's colour; none (a wall the world file gave no colour) is the page's wall colour. */
+function rgbText(rgb) {
+  return Array.isArray(rgb) ? `rgb(${rgb[0]}, ${rgb[1]}, ${rgb[2]})` : COLORS.static;
+}
+
+function sceneImage(src) {
+  if (!sceneImages.has(src)) {
+    const image = new Image();
+    image.onload = () => requestRender('world');
+    image.src = src;
+    sceneImages.set(src, image);
+  }
+  return sceneImages.get(src);
+}
+
+/** Moves the context's origin to world point `at`, turned by `angleDeg` anticlockwise (y up in the world). */
+function placeAt(ctx, at, angleDeg) {
+  const [px, py] = worldToPixel(at[0], at[1]);
+  ctx.translate(px, py);
+  ctx.rotate(-angleDeg * Math.PI / 180);
+}
+
+const PRIMITIVE_DRAWERS = {
+  FilledPolygon(ctx, p) {
+    ctx.beginPath();
+    for (const ring of p.rings) {
+      ring.forEach((point, i) => {
+        const [px, py] = worldToPixel(point[0], point[1]);
+        if (i === 0) ctx.moveTo(px, py);
+        else ctx.lineTo(px, py);
+      });
+      ctx.closePath();
+    }
+    ctx.fillStyle = rgbText(p.rgb);
+    ctx.fill('evenodd');
+  },
+  Polyline(ctx, p) {
+    tracePath(ctx, p.points);
+    if (p.closed) ctx.closePath();
+    ctx.strokeStyle = rgbText(p.rgb);
+    ctx.lineWidth = Math.max(p.width * currentView().scale, 1);
+    ctx.lineCap = 'butt';
+    ctx.lineJoin = 'round';
+    ctx.stroke();
+  },
+  Disc(ctx, p) {
+    const [px, py] = worldToPixel(p.center[0], p.center[1]);
+    ctx.beginPath();
+    ctx.arc(px, py, Math.max(p.radius * currentView().scale, 1), 0, 2 * Math.PI);
+    ctx.fillStyle = rgbText(p.rgb);
+    ctx.fill();
+  },
+  Text(ctx, p) {
+    placeAt(ctx, p.position, p.angle_deg);
+    ctx.font = `${p.bold ? 'bold ' : ''}${p.height * currentView().scale / CAP_HEIGHT_PER_EM}px "DejaVu Sans", sans-serif`;
+    ctx.textAlign = 'center';
+    ctx.textBaseline = 'middle';
+    ctx.fillStyle = rgbText(p.rgb);
+    ctx.fillText(p.text, 0, 0);
+  },
+  Image(ctx, p) {
+    const image = sceneImage(p.src);
+    if (!image.complete || !image.naturalWidth) return;
+    const scale = currentView().scale;
+    placeAt(ctx, p.center, p.yaw_deg);
+    ctx.imageSmoothingEnabled = true;
+    ctx.drawImage(image, -p.size[0] * scale / 2, -p.size[1] * scale / 2, p.size[0] * scale, p.size[1] * scale);
+  },
+};
+
+function drawPrimitives(ctx, primitives) {
+  for (const primitive of primitives) {
+    const draw = PRIMITIVE_DRAWERS[primitive.kind];
+    if (!draw) continue;
+    ctx.save();
+    draw(ctx, primitive);
+    ctx.restore();
+  }
 }
 
 function drawShape(ctx, shape) {

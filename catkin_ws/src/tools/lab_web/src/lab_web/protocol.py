@@ -5,7 +5,12 @@ Server -> page (every frame has "type"):
   hello     {"version": 1, "teleop_limits": {"robot": [linear m/s, angular rad/s], "turtle1": [...]},
              "world_frame": "odom"}                                once, on connect
   world     {"bounds": [xmin, ymin, xmax, ymax], "static": [shape, ...], "models": [model, ...],
-             "robots": [model, ...]}                               on connect and whenever it changes (<= 2 Hz)
+             "robots": [model, ...], "scene": [primitive, ...] | null}  on connect and whenever it changes (<= 2 Hz)
+            scene: tb3_sim's /gazebo/scene_primitives as they are (floor layer and static shapes; null without it):
+                   {"kind": "FilledPolygon", "rings", "rgb"} | {"kind": "Polyline", "points", "width", "rgb",
+                   "closed"} | {"kind": "Disc", "center", "radius", "rgb"} | {"kind": "Text", "text", "position",
+                   "height", "angle_deg", "bold", "rgb"} | {"kind": "Image", "src" (PNG data URL), "center", "size",
+                   "yaw_deg"}; metres, [r, g, b] 0-255 (null: the page's wall colour); drawn instead of "static"
             shape: {"kind": "polygon", "points": [[x, y], ...]} | {"kind": "segment", "points": [[x, y], [x, y]]}
                    | {"kind": "circle", "x", "y", "r"}
             model: {"name", "kind": "box" | "circle", "x", "y", "yaw", "sx", "sy" (box) | "r" (circle)}

@@ -3,9 +3,10 @@ interfaces any user has (topics, the master, services) and acts only through the
 
 Watched: <ns>/odom, <ns>/scan and /tf_static (the robot and its sweep: the LiDAR's fixed offset from the
 robot's base composed with odom's pose, which saves following /tf at 30 Hz and more), /gazebo/world_markers
-(walls and models), every turtlesim/Pose topic and turtlesim's ~canvas/compressed (turtles and pen trails), the
-master's system state (the graph panel), the selected topic (echo) and <ns>/camera/rgb/image_raw while a page
-shows it.
+(walls and models), /gazebo/scene_primitives (the floor layer and static shapes as tb3_sim's drawing primitives,
+passed to the page as they are), every turtlesim/Pose topic and turtlesim's ~canvas/compressed (turtles and pen
+trails), the master's system state (the graph panel), the selected topic (echo) and <ns>/camera/rgb/image_raw while
+a page shows it.
 Rates are measured like `rostopic hz` but only on topics someone else already subscribes to, or the selected
 one, so opening the page never makes a lazy sensor (camera, model states) start working.
 
@@ -26,6 +27,7 @@ from gazebo_msgs.srv import DeleteModel, GetModelState, SetModelState, SpawnMode
 from geometry_msgs.msg import Pose, Twist
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import CompressedImage, Image, LaserScan
+from std_msgs.msg import String
 from std_srvs.srv import Empty
 from tf2_msgs.msg import TFMessage
 from visualization_msgs.msg import MarkerArray
@@ -107,10 +109,12 @@ class RosBridge:
         self._publishers = {}
         self._box_count = 0
         self._static_transforms = {}
+        self._scene_primitives = None
         self._subscribers = [
             rospy.Subscriber(self._name("odom"), Odometry, self._on_odom, queue_size=1),
             rospy.Subscriber(self._name("scan"), LaserScan, self._on_scan, queue_size=1),
             rospy.Subscriber("/gazebo/world_markers", MarkerArray, self._on_world_markers, queue_size=1),
+            rospy.Subscriber("/gazebo/scene_primitives", String, self._on_scene_primitives, queue_size=1),
             rospy.Subscriber("/tf_static", TFMessage, self._on_tf_static, queue_size=10),
         ]
         self._threads = [threading.Thread(target=loop, daemon=True, name=loop.__name__)
@@ -175,10 +179,17 @@ class RosBridge:
                          scene.yaw_of(marker.pose.orientation.z, marker.pose.orientation.w)),
             marker.scale.x, marker.scale.y, tuple((point.x, point.y) for point in marker.points), marker.text)
             for marker in array.markers]
-        content = scene.world_content(markers)
         with self._lock:
+            content = scene.with_scene(scene.world_content(markers), self._scene_primitives)
             if content != self.world.value:
                 self.world.set(content)
+
+    def _on_scene_primitives(self, message):
+        primitives = scene.scene_primitives(message.data)
+        with self._lock:
+            self._scene_primitives = primitives
+            if self.world.value is not None:
+                self.world.set(scene.with_scene(self.world.value, primitives))
 
     def _sim_time_and_rtf(self):
         """(sim time s or None without /use_sim_time, real-time factor over the last second or None)."""

@@ -3,6 +3,7 @@ trail and the newest LiDAR sweep in the world frame. No ROS import: the bridge p
 
 Coordinates are metres in the world (odom) frame, rounded to millimetres to keep frames small.
 """
+import json
 import math
 from collections import deque
 from typing import Iterable, List, NamedTuple, Optional, Sequence, Tuple
@@ -196,3 +197,46 @@ def robot_state(pose: Optional[Pose2D], linear, angular):
         return None
     return {"x": _mm(pose.x), "y": _mm(pose.y), "yaw": round(pose.yaw, 4), "v": round(linear, 3),
             "w": round(angular, 3)}
+
+
+# The scene description tb3_sim publishes is trusted local data, but still bounded.
+MAX_SCENE_CHARS = 32 * 1024 * 1024
+
+
+def scene_primitives(text):
+    """The list of drawing primitives of /gazebo/scene_primitives' JSON `text` (tb3_sim.core.primitives.to_data),
+    or None when it is not a JSON list of objects with a "kind" (the page then draws the static shapes of the
+    markers)."""
+    if len(text) > MAX_SCENE_CHARS:
+        return None
+    try:
+        primitives = json.loads(text)
+    except ValueError:
+        return None
+    if not isinstance(primitives, list) or not all(isinstance(p, dict) and "kind" in p for p in primitives):
+        return None
+    return primitives
+
+
+def _scene_points(primitive):
+    points = [point for ring in primitive.get("rings", []) for point in ring] + list(primitive.get("points", []))
+    for key in ("center", "position"):
+        if key in primitive:
+            points.append(primitive[key])
+    return points
+
+
+def with_scene(content, primitives):
+    """The `world` frame content with the scene primitives added ("scene": list or None) and its bounds widened to
+    take in the floor and static shapes they draw (a floor often reaches past the walls)."""
+    content = {**content, "scene": primitives}
+    points = [point for primitive in primitives or [] for point in _scene_points(primitive)]
+    if points:
+        x_min, y_min, x_max, y_max = content["bounds"]
+        xs, ys = [p[0] for p in points], [p[1] for p in points]
+        if content["static"] or content["models"]:
+            xs, ys = xs + [x_min + VIEW_MARGIN_M, x_max - VIEW_MARGIN_M], ys + [y_min + VIEW_MARGIN_M,
+                                                                                 y_max - VIEW_MARGIN_M]
+        content["bounds"] = [_mm(min(xs) - VIEW_MARGIN_M), _mm(min(ys) - VIEW_MARGIN_M),
+                             _mm(max(xs) + VIEW_MARGIN_M), _mm(max(ys) + VIEW_MARGIN_M)]
+    return content

@@ -7,8 +7,8 @@ sensors at their rates from `time_s`. Physics knows nothing of rendering or ROS.
 Gazebo semantics kept: reset_world puts every model (including spawned ones) back to its initial pose and every
 robot to its spawn pose with the command zeroed, and keeps sim time running; reset_simulation does the same and
 rewinds sim time to 0. Spawned models and robots survive both. Model names follow /gazebo/model_states:
-`ground_plane`, the world's static model (e.g. `ros_symbol`), the world-file models, then robots and spawned
-models in the order they were added.
+`ground_plane` (only in a world without a floor layer), the world's static models (e.g. `ros_symbol`) in file
+order, the world-file models, then robots and spawned models in the order they were added.
 
 Several robots (any TurtleBot3 model each) share the world: they collide with each other and with everything
 else, and each one's sensors see the others (`obstacles(excluding=...)`).
@@ -68,9 +68,8 @@ class World:
         self._models = {}
         for spec in description.models:
             self._models[spec.name] = ModelBody(self._b2world, self._ground, spec)
-        self._reserved = {GROUND_PLANE_NAME}
-        if description.static_model:
-            self._reserved.add(description.static_model)
+        self._fixed_names = [*self._ground_plane(description), *description.static_model_names]
+        self._reserved = set(self._fixed_names)
         self.clamp_command = clamp_command
         self._robots = {}
         self._added = []   # names of robots and spawned models, in the order they joined
@@ -144,11 +143,15 @@ class World:
 
     def model_names(self):
         """Names for /gazebo/model_states, in Gazebo's order (see the module docstring)."""
-        names = [GROUND_PLANE_NAME]
-        if self.description.static_model:
-            names.append(self.description.static_model)
+        names = list(self._fixed_names)
         file_models = [s.name for s in self.description.models if s.name in self._models]
         return names + file_models + self._added
+
+    @staticmethod
+    def _ground_plane(description):
+        """[GROUND_PLANE_NAME] for a world on Gazebo's ground plane; [] for a world with a floor layer, whose floor
+        model is the ground, as in the course worlds (their .world files include no ground_plane model)."""
+        return [GROUND_PLANE_NAME] if description.floor is None else []
 
     def model_states(self):
         """[(name, ModelState)] for every model, in `model_names()` order."""

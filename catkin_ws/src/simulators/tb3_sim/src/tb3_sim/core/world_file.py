@@ -9,7 +9,30 @@ Format (every key is checked; unknown keys and bad values raise `WorldFileError`
       - {type: segment, start: [x, y], end: [x, y]}          # zero-thickness wall
       - {type: polygon, points: [[x, y], [x, y], [x, y]]}    # solid, convex, 3-8 vertices
       - {type: circle, center: [x, y], radius: r}            # solid disc (a pillar)
+      - {type: box, center: [x, y], size: [sx, sy], yaw: 0.0}  # solid rectangle as Gazebo gives a box (yaw in
+                                                             # rad, default 0), stored as a Polygon
       # each static item also takes an optional `height` (m above the floor, default 1.0) and `color`
+    static_models:             # optional, instead of static_model + static: several named static models, each
+      - name: navigation       # listed in /gazebo/model_states at pose 0 in this order
+        static: [...]          # static shapes as under `static:`
+    floor:                     # optional; omitted: Gazebo's infinite grey ground plane (model `ground_plane`);
+                               # given: the floor model is the ground and no `ground_plane` is listed
+      size: [sx, sy]           # the visible floor rectangle, m; outside it a camera sees the background grey
+      center: [x, y]           # optional, default [0, 0]
+      color: white             # optional base colour, default white
+      image: {file: f.png, size: [sx, sy], center: [x, y], yaw_deg: 0}  # optional PNG/JPEG over the base
+                               # colour (path relative to this file, at most 4096 px a side; top row at +y)
+      markings:                # optional, drawn in order over the image; `color` required on each
+        - {type: rectangle, center: [x, y], size: [w, h], yaw_deg: 0.0, color: c}
+        - {type: polygon, points: [[x, y], ...], color: c}             # any simple polygon
+        - {type: circle, center: [x, y], radius: r, color: c}
+        - {type: arc, center: [x, y], radius: r, start_deg: a0, end_deg: a1, width: w, color: c}  # anticlockwise
+        - {type: polyline, points: [[x, y], ...], width: w, color: c, closed: false}
+        - {type: curve, points: [p0, c1, c2, p1, ...], width: w, color: c}   # cubic Béziers as SVG's "C"
+        - {type: text, text: "A", position: [x, y], height: h, angle_deg: 0.0, color: c, bold: false}
+        # `width: w` on rectangle/polygon/circle draws the outline only; `dash: [on, off]` (m, with width) dashes
+        # a stroke; `arrow: start|end` on arc/polyline/curve adds an arrowhead `arrow_length` m long (3 x width)
+        # (see core.floor for the meaning of every field)
     models:                    # optional list of named models (movable with set_model_state)
       - name: box1             # required, unique, not `ground_plane` nor the static_model name
         type: box              # box | cylinder
@@ -37,6 +60,8 @@ from typing import Optional, Tuple, Union
 import yaml
 
 from tb3_sim.core.errors import WorldFileError
+from tb3_sim.core.floor import Floor
+from tb3_sim.core.floor_file import parse_floor
 from tb3_sim.core.geometry import Pose2D
 from tb3_sim.core.materials import colour_from_name_or_hex, rgb_from_unit
 from tb3_sim.core.shapes import DEFAULT_STATIC_HEIGHT_M, Box, Circle, Cylinder, Polygon, Rgb, Segment
@@ -51,8 +76,11 @@ MAX_POLYGON_VERTICES = 8
 
 SHIPPED_WORLDS_DIR = Path(__file__).resolve().parents[3] / "worlds"
 
-_TOP_KEYS = {"name": True, "static_model": False, "static": False, "models": False}
+_TOP_KEYS = {"name": True, "static_model": False, "static": False, "static_models": False, "models": False,
+             "floor": False}
+_STATIC_MODEL_KEYS = {"name": True, "static": True}
 _STATIC_KEYS = {
+    "box": {"type": True, "center": True, "size": True, "yaw": False, "height": False, "color": False},
     "segment": {"type": True, "start": True, "end": True, "height": False, "color": False},
     "polygon": {"type": True, "points": True, "height": False, "color": False},
     "circle": {"type": True, "center": True, "radius": True, "height": False, "color": False},
@@ -79,14 +107,35 @@ class ModelSpec:
 
 
 @dataclass(frozen=True)
+class StaticModel:
+    """A named static model: its shapes (world frame), listed in /gazebo/model_states at pose 0."""
+
+    name: str
+    shapes: Tuple[Union[Segment, Polygon, Circle], ...]
+
+
+@dataclass(frozen=True)
 class WorldDescription:
-    """Everything a world file says. `source` is the file it came from (for messages)."""
+    """Everything a world file says. `source` is the file it came from (for messages).
+
+    `static_shapes` holds every static shape of the world; `static_models` names the models they belong to when
+    the file lists several (`static_models:`); the single-model form sets `static_model` instead. `floor` is the
+    floor layer, or None for Gazebo's plain infinite ground plane."""
 
     name: str
     static_model: Optional[str] = None
     static_shapes: Tuple[Union[Segment, Polygon, Circle], ...] = ()
     models: Tuple[ModelSpec, ...] = ()
     source: str = "<memory>"
+    static_models: Tuple[StaticModel, ...] = ()
+    floor: Optional[Floor] = None
+
+    @property
+    def static_model_names(self):
+        """The static models' names for /gazebo/model_states, in file order (after `ground_plane`)."""
+        if self.static_models:
+            return tuple(model.name for model in self.static_models)
+        return (self.static_model,) if self.static_model else ()
 
 
 def shipped_world_path(world_name):
@@ -112,26 +161,31 @@ def load_world(path):
 
 
 def parse_world(data, source="<memory>"):
-    """Validate already-parsed YAML `data` (a dict) and return a `WorldDescription`."""
+    """Validate already-parsed YAML `data` (a dict) and return a `WorldDescription`. A floor image's path is
+    relative to the folder of `source` (the current folder for "<memory>")."""
     reader = _Reader(source)
     reader.keys(data, "<top>", _TOP_KEYS)
     name = reader.name(data["name"], "name")
+    taken = {GROUND_PLANE_NAME}
     static_model = None
     if "static_model" in data:
-        static_model = reader.name(data["static_model"], "static_model")
-        if static_model == GROUND_PLANE_NAME:
-            reader.fail("static_model", f"'{GROUND_PLANE_NAME}' is reserved for the ground plane")
-    static_shapes = tuple(reader.static_shape(item, f"static[{i}]")
-                          for i, item in enumerate(reader.list(data.get("static", []), "static")))
-    models = []
-    taken = {GROUND_PLANE_NAME, static_model}
-    for i, item in enumerate(reader.list(data.get("models", []), "models")):
-        model = reader.model(item, f"models[{i}]")
-        if model.name in taken:
-            reader.fail(f"models[{i}].name", f"name '{model.name}' is already used in this world")
-        taken.add(model.name)
-        models.append(model)
-    return WorldDescription(name, static_model, static_shapes, tuple(models), source)
+        static_model = reader.unique_name(data["static_model"], "static_model", taken)
+    static_shapes = reader.static_shapes(data.get("static", []), "static")
+    static_models = ()
+    if "static_models" in data:
+        for single in ("static_model", "static"):
+            if single in data:
+                reader.fail(single, "give either `static_models` or `static_model`/`static`, not both")
+        static_models = tuple(reader.static_model(item, f"static_models[{i}]", taken)
+                              for i, item in enumerate(reader.list(data["static_models"], "static_models")))
+        static_shapes = tuple(shape for model in static_models for shape in model.shapes)
+    models = tuple(reader.model(item, f"models[{i}]", taken)
+                   for i, item in enumerate(reader.list(data.get("models", []), "models")))
+    floor = None
+    if "floor" in data:
+        base_dir = Path(source).parent if source != "<memory>" else Path.cwd()
+        floor = parse_floor(reader, data["floor"], "floor", base_dir)
+    return WorldDescription(name, static_model, static_shapes, models, source, static_models, floor)
 
 
 class _Reader:
@@ -165,6 +219,16 @@ class _Reader:
             self.fail(key, f"expected a non-empty name without spaces, got {value!r}")
         return value
 
+    def unique_name(self, value, key, taken):
+        """A model name not in `taken` (which it joins)."""
+        name = self.name(value, key)
+        if name == GROUND_PLANE_NAME:
+            self.fail(key, f"'{GROUND_PLANE_NAME}' is reserved for the ground plane")
+        if name in taken:
+            self.fail(key, f"name '{name}' is already used in this world")
+        taken.add(name)
+        return name
+
     def number(self, value, key, positive=False):
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
             self.fail(key, f"expected a finite number, got {value!r}")
@@ -189,8 +253,23 @@ class _Reader:
     def height(self, item, key):
         return self.number(item.get("height", DEFAULT_STATIC_HEIGHT_M), f"{key}.height", positive=True)
 
+    def static_shapes(self, value, key):
+        return tuple(self.static_shape(item, f"{key}[{i}]") for i, item in enumerate(self.list(value, key)))
+
+    def static_model(self, item, key, taken):
+        self.keys(item, key, _STATIC_MODEL_KEYS)
+        return StaticModel(self.unique_name(item["name"], f"{key}.name", taken),
+                           self.static_shapes(item["static"], f"{key}.static"))
+
     def static_shape(self, item, key):
         kind = self.kind(item, key, _STATIC_KEYS)
+        if kind == "box":
+            center = self.numbers(item["center"], f"{key}.center", 2)
+            size = self.numbers(item["size"], f"{key}.size", 2, positive=True)
+            height = self.height(item, key)
+            placed = Pose2D(*center, self.number(item.get("yaw", 0.0), f"{key}.yaw"))
+            return Polygon(tuple(placed.compose(x, y) for x, y in Box(*size, height).corners()), height,
+                           self.colour(item, key))
         if kind == "segment":
             start = self.numbers(item["start"], f"{key}.start", 2)
             end = self.numbers(item["end"], f"{key}.end", 2)
@@ -229,9 +308,9 @@ class _Reader:
             self.fail(key, "polygon must be convex with no repeated or collinear vertices")
         return points
 
-    def model(self, item, key):
+    def model(self, item, key, taken):
         kind = self.kind(item, key, _MODEL_KEYS)
-        name = self.name(item["name"], f"{key}.name")
+        name = self.unique_name(item["name"], f"{key}.name", taken)
         if kind == "box":
             sx, sy, sz = self.numbers(item["size"], f"{key}.size", 3, positive=True)
             shape = Box(sx, sy, sz)

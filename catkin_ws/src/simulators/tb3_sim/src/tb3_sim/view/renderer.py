@@ -5,17 +5,22 @@ paintEvent later), `render_image(scene, ...)` returns a QImage and `save_png(...
 is needed to paint on a QImage, in any thread; set QT_QPA_PLATFORM=offscreen where no display exists.
 Nothing here knows about physics or ROS: the scene is a copy of the world's state.
 
-Picture: world +x to the right, +y up; a 1 m grid; static geometry grey, dynamic models brown, static models
-dark brown, robots dark blue with a yellow heading mark, trails light blue, the first robot's laser rays translucent red
-ending at red hit dots.
+Picture: world +x to the right, +y up; a 1 m grid, under the floor layer with its markings (if any); static
+geometry in its colour (grey by default), models in theirs (by default dynamic ones brown, static ones dark brown),
+robots dark blue with a yellow heading mark, trails light blue, the first robot's laser rays translucent red ending
+at red hit dots. The floor, the static geometry and the models are the scene primitives (core.scene_primitives)
+that every view draws, painted by view.primitive_painter.
 """
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 from PyQt5.QtCore import QLineF, QPointF, Qt
-from PyQt5.QtGui import QBrush, QColor, QImage, QPainter, QPen, QPolygonF
+from PyQt5.QtGui import QBrush, QColor, QImage, QPainter, QPen, QPolygonF, QTransform
 
-from tb3_sim.core.shapes import Box, Circle, Polygon, Segment
+from tb3_sim.core.primitives import primitives_extent
+from tb3_sim.core.scene_primitives import model_primitives, scene_primitives
+from tb3_sim.view.primitive_painter import paint_primitives
 
 SNAPSHOT_SIZE_PX = 800
 MARGIN_M = 0.5
@@ -72,19 +77,17 @@ class View:
     def point(self, x, y):
         return QPointF(*self.to_pixel(x, y))
 
+    def transform(self):
+        """The QTransform from world metres to this view's pixels."""
+        return QTransform(self.scale, 0.0, 0.0, -self.scale, -self.left * self.scale, self.top * self.scale)
+
 
 def _scene_extent_points(scene):
     xs, ys = [r.pose.x for r in scene.robots] or [0.0], [r.pose.y for r in scene.robots] or [0.0]
-    for shape in scene.static_shapes:
-        if isinstance(shape, Segment):
-            points = (shape.start, shape.end)
-        elif isinstance(shape, Polygon):
-            points = shape.points
-        else:
-            (cx, cy), r = shape.center, shape.radius
-            points = ((cx - r, cy - r), (cx + r, cy + r))
-        xs.extend(p[0] for p in points)
-        ys.extend(p[1] for p in points)
+    extent = primitives_extent(_fixed_primitives(scene))
+    if extent is not None:
+        xs.extend(extent[0::2])
+        ys.extend(extent[1::2])
     for model in scene.models:
         xs.append(model.pose.x)
         ys.append(model.pose.y)
@@ -115,11 +118,11 @@ def save_png(scene, path, width_px=SNAPSHOT_SIZE_PX, height_px=SNAPSHOT_SIZE_PX)
 
 
 def paint(painter, scene, view):
-    """Draw `scene` with `painter` through `view` (grid, geometry, models, trail, rays, robot)."""
+    """Draw `scene` with `painter` through `view` (grid, floor, geometry, models, trail, rays, robot). The floor
+    layer covers the grid, as the floor hides Gazebo's grid."""
     painter.setRenderHint(QPainter.Antialiasing)
     _paint_grid(painter, view)
-    _paint_static(painter, scene, view)
-    _paint_models(painter, scene, view)
+    _paint_in_world(painter, view, _fixed_primitives(scene) + _model_primitives(scene))
     _paint_trail(painter, scene, view)
     _paint_scan(painter, scene, view)
     _paint_robots(painter, scene, view)
@@ -139,31 +142,35 @@ def _paint_grid(painter, view):
         y += GRID_SPACING_M
 
 
-def _paint_static(painter, scene, view):
-    painter.setBrush(QBrush(STATIC_FILL))
-    painter.setPen(Qt.NoPen)
-    for shape in scene.static_shapes:
-        if isinstance(shape, Polygon):
-            painter.drawPolygon(QPolygonF([view.point(x, y) for x, y in shape.points]))
-        elif isinstance(shape, Circle):
-            radius = shape.radius * view.scale
-            painter.drawEllipse(view.point(*shape.center), radius, radius)
-    painter.setPen(QPen(STATIC_FILL, WALL_WIDTH_PX))
-    for shape in scene.static_shapes:
-        if isinstance(shape, Segment):
-            painter.drawLine(QLineF(view.point(*shape.start), view.point(*shape.end)))
+def _rgb(colour):
+    return colour.red(), colour.green(), colour.blue()
 
 
-def _paint_models(painter, scene, view):
-    painter.setPen(Qt.NoPen)
+def _fixed_primitives(scene):
+    """The floor layer and the static shapes, in their colours (the view's grey by default)."""
+    return list(_fixed_primitives_of(scene.floor, scene.static_shapes))
+
+
+@lru_cache(maxsize=4)
+def _fixed_primitives_of(floor, static_shapes):
+    """Memoised: the window repaints at REPAINT_HZ, and flattening a detailed floor's curves and dashes takes
+    milliseconds; the fixed scene never changes while a world runs."""
+    return tuple(scene_primitives(floor, static_shapes, _rgb(STATIC_FILL)))
+
+
+def _model_primitives(scene):
+    parts = []
     for model in scene.models:
-        painter.setBrush(QBrush(STATIC_MODEL_FILL if model.static else MODEL_FILL))
-        if isinstance(model.shape, Box):
-            corners = [model.pose.compose(x, y) for x, y in model.shape.corners()]
-            painter.drawPolygon(QPolygonF([view.point(x, y) for x, y in corners]))
-        else:
-            radius = model.shape.radius * view.scale
-            painter.drawEllipse(view.point(model.pose.x, model.pose.y), radius, radius)
+        rgb = model.rgb or _rgb(STATIC_MODEL_FILL if model.static else MODEL_FILL)
+        parts.extend(model_primitives(model.shape, model.pose, rgb))
+    return parts
+
+
+def _paint_in_world(painter, view, primitives):
+    painter.save()
+    painter.setTransform(view.transform())
+    paint_primitives(painter, primitives)
+    painter.restore()
 
 
 def _paint_trail(painter, scene, view):

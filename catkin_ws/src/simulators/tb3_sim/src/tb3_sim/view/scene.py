@@ -11,6 +11,7 @@ from typing import Optional, Tuple
 
 import numpy as np
 
+from tb3_sim.core.floor import Floor
 from tb3_sim.core.geometry import Pose2D
 from tb3_sim.core.lidar import ScanResult, beam_angles
 
@@ -82,12 +83,14 @@ class Trails:
 
 @dataclass(frozen=True)
 class ModelView:
-    """A box or cylinder model to draw: `shape` (shapes.Box or shapes.Cylinder) at `pose`."""
+    """A box or cylinder model to draw: `shape` (shapes.Box or shapes.Cylinder) at `pose`, its colour `rgb` (None:
+    the view's model colour)."""
 
     name: str
     shape: object
     pose: Pose2D
     static: bool
+    rgb: Optional[Tuple[int, int, int]] = None
 
 
 @dataclass(frozen=True)
@@ -102,14 +105,15 @@ class RobotView:
 
 @dataclass(frozen=True)
 class Scene:
-    """Everything a top-down view needs: static shapes (shapes.Segment/Polygon/Circle), models, robots, and the
-    first robot's latest scan with its origin (or None)."""
+    """Everything a top-down view needs: static shapes (shapes.Segment/Polygon/Circle), models, robots, the
+    first robot's latest scan with its origin (or None), and the world's floor layer (a floor.Floor, or None)."""
 
     static_shapes: Tuple
     models: Tuple[ModelView, ...]
     robots: Tuple[RobotView, ...]
     scan: Optional[ScanResult] = None
     scan_origin: Optional[Pose2D] = None
+    floor: Optional[Floor] = None
 
     def scan_hits(self):
         """(N, 2) world points where the scan's beams hit something (finite ranges only)."""
@@ -124,7 +128,7 @@ class Scene:
 
 def model_views(world):
     """The world's models as ModelViews, poses as of now (call with the world locked)."""
-    return tuple(ModelView(m.name, m.spec.shape, m.pose, m.spec.static) for m in world.models())
+    return tuple(ModelView(m.name, m.spec.shape, m.pose, m.spec.static, m.spec.rgb) for m in world.models())
 
 
 def scene_of(world, trails, scan=None):
@@ -132,4 +136,4 @@ def scene_of(world, trails, scan=None):
     ScanResult or None."""
     robots = tuple(RobotView(r.name, r.pose, r.model.footprint(), trails.strokes(r.name)) for r in world.robots())
     return Scene(static_shapes=world.description.static_shapes, models=model_views(world), robots=robots, scan=scan,
-                 scan_origin=world.robot.scan_pose() if scan is not None else None)
+                 scan_origin=world.robot.scan_pose() if scan is not None else None, floor=world.description.floor)

@@ -11,6 +11,7 @@ from tb3_sim.ros.outputs.imu import ImuOutput
 from tb3_sim.ros.outputs.model_states import ModelStatesOutput
 from tb3_sim.ros.outputs.odometry import OdometryOutput
 from tb3_sim.ros.outputs.scan import ScanOutput
+from tb3_sim.ros.outputs.scene_primitives import ScenePrimitivesOutput
 from tb3_sim.ros.outputs.world_markers import WorldMarkersOutput
 
 
@@ -20,6 +21,7 @@ def world_outputs(config):
         ClockOutput(config.clock_rate),
         ModelStatesOutput(),
         WorldMarkersOutput(),
+        ScenePrimitivesOutput(),
     ]
 
 
