@@ -6,7 +6,14 @@ import subprocess
 import pytest
 import rospy
 from gazebo_msgs.msg import ModelState
-from gazebo_msgs.srv import DeleteModel, GetModelState, GetWorldProperties, SetModelState, SpawnModel
+from gazebo_msgs.srv import (
+    DeleteModel,
+    GetModelState,
+    GetPhysicsProperties,
+    GetWorldProperties,
+    SetModelState,
+    SpawnModel,
+)
 from geometry_msgs.msg import Pose
 from std_srvs.srv import Empty
 
@@ -155,6 +162,22 @@ def test_pause_stops_the_clock_and_unpause_resumes_it(probe):
     frozen = call("get_world_properties", GetWorldProperties).sim_time
     call("unpause_physics", Empty)
     assert probe.wait_for_message("/clock", predicate=lambda m: m["clock"] > frozen)
+
+
+@pytest.mark.parametrize("max_update_rate", ["0.000000001", "0.0001"])
+def test_physics_properties_that_would_stop_the_loop_are_refused(ros_master, probe, max_update_rate):
+    """rosservice's call as a careless student types it: 1e-9 used to end the node with an OverflowError in its
+    pacing sleep, 0.0001 to freeze /clock for a day; both are refused and the simulation runs on unchanged."""
+    result = subprocess.run(["rosservice", "call", "/gazebo/set_physics_properties",
+                             f"{{time_step: 0.001, max_update_rate: {max_update_rate}, gravity: {{z: -9.8}}}}"],
+                            env=ros_master.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            timeout=30)
+    assert result.returncode == 0, result.stdout
+    assert "success: False" in result.stdout and "real-time factor" in result.stdout, result.stdout
+    assert call("get_physics_properties", GetPhysicsProperties).max_update_rate == 200.0
+    probe.take("/clock")
+    ticks = [m["msg"]["clock"] for m in probe.collect("/clock", 1.0)]
+    assert len(ticks) > 20 and ticks == sorted(ticks)
 
 
 def test_rosservice_call_from_the_command_line(ros_master, sim):
