@@ -3,7 +3,9 @@
 No ROS import: it talks to a bridge (lab_web.ros_bridge.RosBridge, or any object with the same methods). Each
 page gets at most UPDATES_PER_S frames of state per second, only what changed since its last frame, and a slow
 page simply gets fewer (each send waits for the previous one). What a page sends is validated
-(lab_web.protocol); a bad frame gets an `error` frame back and changes nothing.
+(lab_web.protocol); a bad frame gets an `error` frame back and changes nothing. Every request whose Host header does
+not name this machine is refused first (DNS rebinding, see lab_web.access), then the page and the socket need the
+token when one is set, and the socket an Origin that is the page's own.
 """
 import asyncio
 import itertools
@@ -188,6 +190,13 @@ def make_app(bridge, policy, static_dir):
     def refused(text):
         return web.Response(status=403, text="lab_web: " + text + "\n")
 
+    @web.middleware
+    async def known_host(request, handler):
+        if not policy.allows_host(request.headers.get("Host")):
+            return refused("the Host header {!r} does not name this machine: open the URL lab_web printed "
+                           "(localhost or 127.0.0.1)".format(request.headers.get("Host", "")))
+        return await handler(request)
+
     async def index(request):
         if not policy.allows(request.query.get("token")):
             return refused("this page needs the token printed where lab_web started: open http://<host>:<port>/"
@@ -228,7 +237,7 @@ def make_app(bridge, policy, static_dir):
         for session in list(sessions):
             await session.socket.close(message=b"lab_web is shutting down")
 
-    app = web.Application(client_max_size=64 * 1024)
+    app = web.Application(client_max_size=64 * 1024, middlewares=[known_host])
     app.router.add_get("/", index)
     app.router.add_get("/ws", socket)
     app.router.add_static("/static/", static_dir, show_index=False, follow_symlinks=False)
