@@ -19,6 +19,7 @@ from std_srvs.srv import Empty
 
 from roslab import wait_for_service
 from tb3_sim.core.model_xml import box_sdf
+from tb3_sim.core.world import MAX_MODELS
 
 SERVICES = ["reset_world", "reset_simulation", "pause_physics", "unpause_physics", "spawn_sdf_model",
             "spawn_urdf_model", "delete_model", "get_model_state", "set_model_state", "get_world_properties"]
@@ -178,6 +179,28 @@ def test_physics_properties_that_would_stop_the_loop_are_refused(ros_master, pro
     probe.take("/clock")
     ticks = [m["msg"]["clock"] for m in probe.collect("/clock", 1.0)]
     assert len(ticks) > 20 and ticks == sorted(ticks)
+
+
+def test_spawning_past_the_model_limit_is_refused(sim):
+    """Thousands of boxes would slow the simulator without limit: the spawn past MAX_MODELS fails with the reason,
+    and the world (robots and models together) holds exactly MAX_MODELS."""
+    before = set(call("get_world_properties", GetWorldProperties).model_names)
+    spawned = []
+    try:
+        for i in range(MAX_MODELS + 1):
+            reply = spawn(f"crowd_{i}", 20.0 + i % 10, 20.0 + i // 10)
+            if not reply.success:
+                break
+            spawned.append(f"crowd_{i}")
+        assert (reply.success, reply.status_message) == (
+            False, f"SpawnModel: Failure - the world already holds {MAX_MODELS} models (robots included), tb3_sim's "
+                   f"limit: delete a model before spawning another")
+        held = set(call("get_world_properties", GetWorldProperties).model_names) - {"ground_plane", "ros_symbol"}
+        assert len(held) == MAX_MODELS and set(spawned) <= held
+    finally:
+        for name in spawned:
+            call("delete_model", DeleteModel, model_name=name)
+    assert set(call("get_world_properties", GetWorldProperties).model_names) == before
 
 
 def test_rosservice_call_from_the_command_line(ros_master, sim):
