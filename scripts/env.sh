@@ -17,6 +17,8 @@
 #   ROS_IP yourself. ROS 1 has no authentication: opening it to a network opens the robot to that network.
 #   roscpp nodes (rosout too) would still listen on every interface; the ros_loopback package's bind()
 #   wrapper, preloaded here, keeps them on loopback whenever ROS is bound to localhost.
+# - rospy nodes read each inbound connection's handshake with a 3 s timeout instead of stalling for 60 s on an
+#   idle one (rospy_handshake_timeout's sitecustomize, first on PYTHONPATH): the lab's one patch of ROS.
 # - The course's aliases: src (re-source this file), tb3_empty_world and tb3_world (when their launch files exist).
 #
 # Safe to source more than once.
@@ -108,6 +110,16 @@ else
     [ -n "$_lab_user_master" ] && export ROS_MASTER_URI="$_lab_user_master"
 fi
 unset _lab_user_master _lab_user_hostname _lab_user_ip
+
+# rospy's inbound TCPROS handshakes get a timeout in every Python process started from here (nodes, rosrun,
+# roslaunch, the grader's sandbox): the lab's one patch of ROS behaviour, see rospy_handshake_timeout. Its
+# sitecustomize folder goes first on PYTHONPATH.
+_lab_startup="$LAB_ROOT/catkin_ws/src/lib/rospy_handshake_timeout/startup"
+case ":${PYTHONPATH:-}:" in
+    *":$_lab_startup:"*) ;;
+    *) export PYTHONPATH="$_lab_startup${PYTHONPATH:+:$PYTHONPATH}" ;;
+esac
+unset _lab_startup
 
 _lab_loopback="$_lab_devel/lib/libros_loopback.so"
 if [ -f "$_lab_loopback" ]; then

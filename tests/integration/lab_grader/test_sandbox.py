@@ -12,7 +12,7 @@ import pytest
 
 from lab_grader import procfs
 from lab_grader.errors import SandboxError
-from lab_grader.sandbox import GRADER_SLOTS, STUDENT_NICENESS, SubmissionSandbox, reserve_slot
+from lab_grader.sandbox import GRADER_SLOTS, MIB, STUDENT_NICENESS, SubmissionSandbox, reserve_slot
 from lab_grader.sandbox_process import StopReason
 
 from .conftest import LAB_ROOT, SLOT_A, TEST_LIMITS, last_json
@@ -198,6 +198,20 @@ def test_printing_50_mb_leaves_a_log_no_bigger_than_the_cap_marked_truncated(box
     assert result.ok and result.truncated, "the program ran to its end, its output was cut"
     assert log.stat().st_size <= TEST_LIMITS.output_bytes
     assert log.read_bytes().startswith(b"xxxx") and b"output truncated" in log.read_bytes()[-200:]
+
+
+def test_the_whole_workspace_is_capped_not_only_each_file(work_root, env, tmp_path):
+    """Files under the per-file cap add up to no more than workspace_bytes: the write past it fails with ENOSPC,
+    as on a full disk, and the box still closes cleanly."""
+    limits = TEST_LIMITS._replace(file_bytes=6 * MIB, workspace_bytes=16 * MIB)
+    writes = "for i in 1 2 3 4 5; do head -c {} /dev/zero > part$i || exit 9; done".format(5 * MIB)
+    with SubmissionSandbox(work_root, SLOT_A, LAB_ROOT, limits) as sandbox:
+        result = sandbox.run_student(["sh", "-c", writes], env, tmp_path / "fill.log")
+        assert result.returncode == 9 and "No space left on device" in (tmp_path / "fill.log").read_text()
+        written = sum(path.stat().st_size for path in sandbox.workspace.iterdir())
+        assert 10 * MIB < written <= 16 * MIB
+        box_dir = sandbox.workspace.parent
+    assert not box_dir.exists()
 
 
 def test_a_short_output_is_kept_whole(box, env, tmp_path):

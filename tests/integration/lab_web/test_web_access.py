@@ -3,6 +3,7 @@ and needs the printed token, for the page and for the WebSocket; another site's 
 import asyncio
 import json
 import re
+import socket
 
 import aiohttp
 import pytest
@@ -21,6 +22,35 @@ async def socket_status(url, **headers):
                 return 101, json.loads(first.data)["type"]
         except aiohttp.WSServerHandshakeError as error:
             return error.status, None
+
+
+def raw_status(base, path, host, **headers):
+    """The status code of a GET of `path` written by hand, with the given Host header (a browser on a rebound
+    DNS name sends its own name there)."""
+    port = int(base.rsplit(":", 1)[1].strip("/"))
+    headers = {"Connection": "close", **headers}
+    lines = ["GET {} HTTP/1.1".format(path), "Host: " + host, *("{}: {}".format(*h) for h in headers.items()), "", ""]
+    with socket.create_connection(("127.0.0.1", port), timeout=10) as raw:
+        raw.sendall("\r\n".join(lines).encode())
+        return int(raw.recv(4096).split(b" ", 2)[1])
+
+
+WEBSOCKET_UPGRADE = {"Upgrade": "websocket", "Connection": "Upgrade", "Sec-WebSocket-Version": "13",
+                     "Sec-WebSocket-Key": "dGhlIHNhbXBsZSBub25jZQ=="}
+
+
+def test_a_dns_rebinding_page_is_refused(ros_master):
+    """Host and Origin agree, as they do for a page on a name its attacker re-pointed at 127.0.0.1: refused, for
+    the page and the socket; the same requests with this machine's names are served."""
+    base, _ = start_web_server(ros_master)
+    port = base.rsplit(":", 1)[1].strip("/")
+    evil = "evil.example:" + port
+    assert raw_status(base, "/", evil) == 403
+    assert raw_status(base, "/static/app.js", evil) == 403
+    assert raw_status(base, "/ws", evil, Origin="http://" + evil, **WEBSOCKET_UPGRADE) == 403
+    for host in ("localhost:" + port, "127.0.0.1:" + port, "[::1]:" + port):
+        assert raw_status(base, "/", host) == 200
+        assert raw_status(base, "/ws", host, Origin="http://" + host, **WEBSOCKET_UPGRADE) == 101
 
 
 def test_on_loopback_the_page_opens_without_a_token(ros_master, browser):

@@ -6,12 +6,20 @@ import subprocess
 import pytest
 import rospy
 from gazebo_msgs.msg import ModelState
-from gazebo_msgs.srv import DeleteModel, GetModelState, GetWorldProperties, SetModelState, SpawnModel
+from gazebo_msgs.srv import (
+    DeleteModel,
+    GetModelState,
+    GetPhysicsProperties,
+    GetWorldProperties,
+    SetModelState,
+    SpawnModel,
+)
 from geometry_msgs.msg import Pose
 from std_srvs.srv import Empty
 
 from roslab import wait_for_service
 from tb3_sim.core.model_xml import box_sdf
+from tb3_sim.core.world import MAX_MODELS
 
 SERVICES = ["reset_world", "reset_simulation", "pause_physics", "unpause_physics", "spawn_sdf_model",
             "spawn_urdf_model", "delete_model", "get_model_state", "set_model_state", "get_world_properties"]
@@ -155,6 +163,44 @@ def test_pause_stops_the_clock_and_unpause_resumes_it(probe):
     frozen = call("get_world_properties", GetWorldProperties).sim_time
     call("unpause_physics", Empty)
     assert probe.wait_for_message("/clock", predicate=lambda m: m["clock"] > frozen)
+
+
+@pytest.mark.parametrize("max_update_rate", ["0.000000001", "0.0001"])
+def test_physics_properties_that_would_stop_the_loop_are_refused(ros_master, probe, max_update_rate):
+    """rosservice's call as a careless student types it: 1e-9 used to end the node with an OverflowError in its
+    pacing sleep, 0.0001 to freeze /clock for a day; both are refused and the simulation runs on unchanged."""
+    result = subprocess.run(["rosservice", "call", "/gazebo/set_physics_properties",
+                             f"{{time_step: 0.001, max_update_rate: {max_update_rate}, gravity: {{z: -9.8}}}}"],
+                            env=ros_master.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            timeout=30)
+    assert result.returncode == 0, result.stdout
+    assert "success: False" in result.stdout and "real-time factor" in result.stdout, result.stdout
+    assert call("get_physics_properties", GetPhysicsProperties).max_update_rate == 200.0
+    probe.take("/clock")
+    ticks = [m["msg"]["clock"] for m in probe.collect("/clock", 1.0)]
+    assert len(ticks) > 20 and ticks == sorted(ticks)
+
+
+def test_spawning_past_the_model_limit_is_refused(sim):
+    """Thousands of boxes would slow the simulator without limit: the spawn past MAX_MODELS fails with the reason,
+    and the world (robots and models together) holds exactly MAX_MODELS."""
+    before = set(call("get_world_properties", GetWorldProperties).model_names)
+    spawned = []
+    try:
+        for i in range(MAX_MODELS + 1):
+            reply = spawn(f"crowd_{i}", 20.0 + i % 10, 20.0 + i // 10)
+            if not reply.success:
+                break
+            spawned.append(f"crowd_{i}")
+        assert (reply.success, reply.status_message) == (
+            False, f"SpawnModel: Failure - the world already holds {MAX_MODELS} models (robots included), tb3_sim's "
+                   f"limit: delete a model before spawning another")
+        held = set(call("get_world_properties", GetWorldProperties).model_names) - {"ground_plane", "ros_symbol"}
+        assert len(held) == MAX_MODELS and set(spawned) <= held
+    finally:
+        for name in spawned:
+            call("delete_model", DeleteModel, model_name=name)
+    assert set(call("get_world_properties", GetWorldProperties).model_names) == before
 
 
 def test_rosservice_call_from_the_command_line(ros_master, sim):

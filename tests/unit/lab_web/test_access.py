@@ -29,3 +29,27 @@ def test_a_given_token_is_used():
 def test_unusable_settings_are_refused(host, token, reason):
     with pytest.raises(AccessError, match=reason):
         AccessPolicy(host, token)
+
+
+@pytest.mark.parametrize("host_header", ["localhost:8080", "127.0.0.1:8080", "[::1]:8080", "LOCALHOST", "127.0.0.2"])
+def test_loopback_hosts_are_allowed(host_header):
+    assert AccessPolicy("127.0.0.1").allows_host(host_header)
+
+
+@pytest.mark.parametrize("host_header", ["evil.example:8080", "evil.example", "localhost.evil.example:8080",
+                                         "192.168.1.20:8080", "", None, "[bad:8080", "127.0.0.1@evil.example"])
+def test_a_rebinding_name_or_another_address_is_refused_on_loopback(host_header):
+    assert not AccessPolicy("127.0.0.1").allows_host(host_header)
+
+
+def test_the_configured_host_is_allowed():
+    policy = AccessPolicy("192.168.1.20", token="class-of-2026")
+    assert policy.allows_host("192.168.1.20:8080") and policy.allows_host("localhost:8080")
+    assert not policy.allows_host("192.168.1.21:8080") and not policy.allows_host("evil.example:8080")
+
+
+def test_on_every_interface_any_address_and_the_machine_names_are_allowed():
+    policy = AccessPolicy("0.0.0.0", machine_names=("labpc", "labpc.example.org"))
+    assert policy.allows_host("10.1.2.3:8080") and policy.allows_host("[fe80::1]:8080")
+    assert policy.allows_host("LabPC:8080") and policy.allows_host("labpc.example.org.")
+    assert not policy.allows_host("evil.example:8080")

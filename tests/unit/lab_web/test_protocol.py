@@ -43,6 +43,17 @@ def test_non_finite_numbers_are_refused():
     assert "finite" in str(refusal('{"type": "spawn_box", "id": 1, "x": Infinity, "y": 0}'))
 
 
+@pytest.mark.parametrize("kind", ["teleop", "spawn_box"])
+def test_an_integer_too_large_for_a_float_is_refused_not_a_crash(kind):
+    """A 309-digit integer is valid JSON that float() cannot hold: it used to raise OverflowError and drop the
+    page."""
+    huge = "1" + "0" * 308
+    text = ('{"type": "teleop", "target": "robot", "linear": %s, "angular": 0}' % huge if kind == "teleop" else
+            '{"type": "spawn_box", "id": 1, "x": %s, "y": 0}' % huge)
+    reason = str(refusal(text))
+    assert "must be a finite number within" in reason and "1000000000" in reason
+
+
 @pytest.mark.parametrize("text, reason", [
     ("", "not JSON"), ("{", "not JSON"), ("[1, 2]", "JSON object"), ('"teleop"', "JSON object"),
     ('{"type": "launch_missiles"}', "unknown type"), ("{}", "unknown type"),

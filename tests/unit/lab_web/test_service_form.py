@@ -35,6 +35,7 @@ def test_values_are_converted_to_the_field_types():
     (add_two_int._request_class, {"a": 2 ** 63}, "int64 from"),
     (SetBool._request_class, {"request_signal": "yes"}, "true or false"),
     (Approach._request_class, {"approach_velocity": "fast"}, "must be a number"),
+    (Approach._request_class, {"approach_velocity": 10 ** 308 * 10}, "an integer of 310 digits"),
     (TimedMovement._request_class, {"movement_request": 5}, "must be a string"),
     (SetBool._request_class, {"data": True}, "no field data"),
 ])

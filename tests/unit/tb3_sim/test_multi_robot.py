@@ -126,12 +126,15 @@ def test_physics_properties_set_the_real_time_factor_as_gazebo_computes_it():
     assert PhysicsProperties.for_pacing(0.005, 1.0) == PhysicsProperties(0.005, 200.0)
     assert physics_properties(0.001, 5000.0, (0.0, 0.0, -9.8)).real_time_factor == pytest.approx(5.0)
     assert physics_properties(0.001, 0.0, (0.0, 0.0, -9.8)).real_time_factor == 0.0
+    assert physics_properties(0.001, 10.0, (0.0, 0.0, -9.8)).real_time_factor == pytest.approx(0.01)
 
 
 @pytest.mark.parametrize("time_step, rate, gravity, field", [
     (0.0, 1000.0, (0, 0, -9.8), "time_step"), (math.nan, 1000.0, (0, 0, -9.8), "time_step"),
     (0.001, -1.0, (0, 0, -9.8), "max_update_rate"), (0.001, math.inf, (0, 0, -9.8), "max_update_rate"),
     (0.001, 1000.0, (0, math.nan, -9.8), "gravity"),
+    (0.001, 1e-9, (0, 0, -9.8), "real-time factor"), (0.001, 0.0001, (0, 0, -9.8), "real-time factor"),
+    (0.001, 9.0, (0, 0, -9.8), "real-time factor"), (1e300, 1e300, (0, 0, -9.8), "real-time factor"),
 ])
 def test_bad_physics_properties_are_refused_naming_the_field(time_step, rate, gravity, field):
     with pytest.raises(BadRequestError, match=field):

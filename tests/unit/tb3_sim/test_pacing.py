@@ -11,7 +11,7 @@ def test_factor_one_waits_until_wall_time_catches_up():
 
 
 def test_factor_five_runs_five_sim_seconds_per_wall_second():
-    pacer = Pacer(5.0)
+    pacer = Pacer(5.0, max_sleep_s=1.0)
     pacer.restart(0.0, 0.0)
     assert pacer.delay(1.0, 0.05) == pytest.approx(0.15)
 
@@ -54,3 +54,12 @@ def test_sim_time_going_back_reanchors():
 def test_bad_factor_is_refused(factor):
     with pytest.raises(ValueError, match="real_time_factor"):
         Pacer(factor)
+
+
+def test_a_long_wait_is_given_in_short_sleeps_until_it_is_over():
+    """A slow pacing never sleeps longer than max_sleep_s at once, so the loop re-checks for Ctrl-C meanwhile."""
+    pacer = Pacer(0.01, max_sleep_s=0.1)
+    pacer.restart(0.0, 0.0)
+    assert pacer.delay(0.01, 0.0) == pytest.approx(0.1)
+    assert pacer.delay(0.01, 0.95) == pytest.approx(0.05)
+    assert pacer.delay(0.01, 1.0) == 0.0

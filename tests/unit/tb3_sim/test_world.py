@@ -4,12 +4,19 @@ import math
 
 import pytest
 
-from tb3_sim.core.errors import DuplicateModelError, OverlapError, ProtectedModelError, SimError, UnknownModelError
+from tb3_sim.core.errors import (
+    DuplicateModelError,
+    ModelLimitError,
+    OverlapError,
+    ProtectedModelError,
+    SimError,
+    UnknownModelError,
+)
 from tb3_sim.core.geometry import Pose2D, Twist2D
 from tb3_sim.core.lidar import Lidar
 from tb3_sim.core.shapes import Box, Cylinder, Polygon, Segment
 from tb3_sim.core.turtlebot3 import WAFFLE
-from tb3_sim.core.world import PHYSICS_STEP_S, World
+from tb3_sim.core.world import MAX_MODELS, PHYSICS_STEP_S, World
 from tb3_sim.core.world_file import ModelSpec, WorldDescription, load_world, shipped_world_path
 
 EMPTY = WorldDescription("empty")
@@ -160,6 +167,18 @@ def test_spawn_overlapping_the_robot_or_a_model_fails():
         world.spawn_model(ModelSpec("box2", Cylinder(0.1, 0.3), Pose2D(1.25, 0.0, 0.0)))
     world.spawn_model(ModelSpec("box2", Cylinder(0.1, 0.3), Pose2D(1.35, 0.0, 0.0)))
     assert world.has_model("box2") and not world.has_model("on_robot")
+
+
+def test_spawns_past_the_model_limit_are_refused_until_one_is_deleted():
+    world = World(EMPTY, robot_pose=Pose2D(0.0, 0.0, 0.0))
+    for i in range(MAX_MODELS - 1):   # the robot is the first of MAX_MODELS
+        world.spawn_model(ModelSpec(f"box{i}", Box(0.2, 0.2, 0.2), Pose2D(1.0 + i % 10, 1.0 + i // 10, 0.0)))
+    with pytest.raises(ModelLimitError, match=f"already holds {MAX_MODELS} models"):
+        world.spawn_model(ModelSpec("one_more", Box(0.2, 0.2, 0.2), Pose2D(-5.0, 0.0, 0.0)))
+    with pytest.raises(ModelLimitError):
+        world.add_robot("robot_2", WAFFLE, Pose2D(-5.0, 0.0, 0.0))
+    world.delete_model("box0")
+    world.spawn_model(ModelSpec("one_more", Box(0.2, 0.2, 0.2), Pose2D(-5.0, 0.0, 0.0)))
 
 
 def test_delete_rules():

@@ -6,7 +6,8 @@
     rosrun lab_grader grade --merge grades/1 grades/2 grades/3 grades/4 --out grades/   the class files
 
 It must run as root (it makes a network namespace and a sandbox user per worker). Exit 0 when every submission
-was graded (whatever the scores), 2 for bad arguments or submissions that could not be read.
+was graded (whatever the scores), 2 for bad arguments (a path that does not exist among them, told in one line)
+or submissions that could not be read.
 """
 import argparse
 import os
@@ -48,6 +49,10 @@ def parse_args(argv):
 
 def main(argv=None):
     args = parse_args(sys.argv[1:] if argv is None else argv)
+    missing = [path for path in args.paths if not path.exists()]
+    if missing:
+        print("grade: {} does not exist".format(", ".join(map(str, missing))), file=sys.stderr)
+        return 2
     if args.merge:
         try:
             results = read_results(args.paths)

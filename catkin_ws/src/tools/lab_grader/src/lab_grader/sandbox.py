@@ -20,22 +20,23 @@ Isolation, layer by layer:
 - Priority: student processes run at niceness STUDENT_NICENESS, below the trusted simulator and checks.
 - Resources (`Limits`, set with `prlimit` on the student's process tree): CPU seconds, address space and file size
   per process; processes and threads of the slot's uid all together (so a node left running counts against the
-  next command of the same box); open files; a wall-clock timeout per run; a capped log.
+  next command of the same box); open files; a wall-clock timeout per run; a capped log; and the whole workspace,
+  a tmpfs of `workspace_bytes` (`workspace_mount`), so many files cannot add up past it either.
 - Root and the workspace: the workspace belongs to the student's uid, so the grader writes into it only through
   `copy_into_workspace` (refused while a student process runs) and never puts a log there.
 - Cleanup (`close()`, also on errors): every started process is killed, then every process left in the box's
   network namespace, then every process of the slot's uid (checked on /proc until none is left), then the
-  namespace holder; the workspace is deleted unless `keep_workspace`.
+  namespace holder; the workspace is unmounted (its content goes with it) and the box's folder deleted.
 
 Trusted commands are the grader's own (roscore, the simulator, the checks): they run as root, in the box's network
 namespace, in their own session, with their output written straight to their log.
 
 Limits of this layer, on purpose: CPU time and memory are per process, not per box (a cgroup would cap the total);
-the workspace's disk use is bounded only by the file-size and process limits and the wall timeout. A trusted
-process that daemonizes is found and killed at close() through the network namespace, but if the grader itself is
-killed, only the direct trusted processes (PR_SET_PDEATHSIG), the holder and the student processes
-(--die-with-parent) die with it; the next sandbox of the slot kills what is left of its uid. The tools come from
-Debian: bubblewrap, util-linux (unshare, nsenter, setpriv, prlimit) and iproute2.
+the workspace takes memory, not disk, up to `workspace_bytes` per box. A trusted process that daemonizes is found
+and killed at close() through the network namespace, but if the grader itself is killed, only the direct trusted
+processes (PR_SET_PDEATHSIG), the holder and the student processes (--die-with-parent) die with it; the next
+sandbox of the slot kills what is left of its uid and unmounts its workspaces. The tools come from Debian:
+bubblewrap, util-linux (unshare, nsenter, setpriv, prlimit), mount and iproute2.
 
 A sandbox is used from one thread: the namespace holder dies with the thread that entered the sandbox.
 """
@@ -54,6 +55,7 @@ from lab_grader.bwrap import STUDENT_NAME, bwrap_args, passwd_with_student
 from lab_grader.errors import SandboxError
 from lab_grader.netns import NetnsHolder, find_tool
 from lab_grader.sandbox_process import CappedLog, RunResult, SandboxProcess
+from lab_grader.workspace_mount import mount_workspace, stale_mounts, unmount
 
 __all__ = ["Limits", "SandboxError", "SubmissionSandbox", "STUDENT_UID_BASE"]
 
@@ -72,6 +74,8 @@ STUDENT_NICENESS = 10
 # Slot locks are machine-wide (not per work root): two graders must never share a uid.
 SLOT_LOCK_DIR = Path("/run/lab_grader")
 SLOT_LOCK_NAME = "slot-{}.lock"
+BOX_PREFIX = "slot{}-"
+WORKSPACE_NAME = "workspace"
 
 
 class Limits(NamedTuple):
@@ -83,6 +87,7 @@ class Limits(NamedTuple):
     file_bytes: int = 256 * MIB  # largest file a process may write (RLIMIT_FSIZE): SIGXFSZ beyond
     open_files: int = 1024  # per process (RLIMIT_NOFILE)
     tmp_bytes: int = 256 * MIB  # size of the private /tmp, and of /dev/shm (each memory-backed)
+    workspace_bytes: int = 1 * GIB  # the whole workspace: sources, build, devel, logs (a memory-backed tmpfs)
     wall_s: float = 120.0  # wall-clock timeout of run_student/run_trusted when none is given
 
 
@@ -123,15 +128,14 @@ def reserve_slot() -> SlotReservation:
 class SubmissionSandbox:
     """The sandbox of one submission in one parallel slot; a context manager (see the module docstring)."""
 
-    def __init__(self, work_root: Path, slot: int, lab_root: Path, limits: Limits = Limits(),
-                 keep_workspace: bool = False):
+    def __init__(self, work_root: Path, slot: int, lab_root: Path, limits: Limits = Limits()):
         self.work_root = Path(work_root).resolve()
         self.lab_root = Path(lab_root).resolve()
         self.slot = slot
         self.limits = limits
-        self.keep_workspace = keep_workspace
         self.uid = self.gid = STUDENT_UID_BASE + slot
         self.workspace: Optional[Path] = None
+        self._workspace_mounted = False
         self._tools = {name: find_tool(name) for name in ("nsenter", "setpriv", "prlimit", "nice", "bwrap")}
         self._netns: Optional[NetnsHolder] = None
         self._namespace: Optional[str] = None  # kept: cleanup needs it even if the holder died
@@ -183,15 +187,18 @@ class SubmissionSandbox:
             self._lock_fd = None
             raise SandboxError("slot {} is in use by another sandbox".format(self.slot)) from None
         self._kill_slot_uid()  # leftovers of a grader that crashed while holding this slot
+        for stale in stale_mounts(self.work_root, BOX_PREFIX.format(self.slot), WORKSPACE_NAME):
+            unmount(stale)
         self._netns = NetnsHolder()
         self._netns.start()
         self._namespace = self._netns.namespace
-        self._box_dir = Path(tempfile.mkdtemp(prefix="slot{}-".format(self.slot), dir=self.work_root))
+        self._box_dir = Path(tempfile.mkdtemp(prefix=BOX_PREFIX.format(self.slot), dir=self.work_root))
         os.chmod(self._box_dir, 0o711)  # the student's uid must pass through to reach its workspace
         (self._box_dir / TRUSTED_ROS_HOME).mkdir(mode=0o700)   # trusted_env's ROS logs: root only
-        self.workspace = self._box_dir / "workspace"
+        self.workspace = self._box_dir / WORKSPACE_NAME
         self.workspace.mkdir(mode=WORKSPACE_MODE)
-        os.chown(self.workspace, self.uid, self.gid)
+        mount_workspace(self.workspace, self.limits.workspace_bytes, self.uid, self.gid, WORKSPACE_MODE)
+        self._workspace_mounted = True
 
     @property
     def netns_holder_pid(self) -> int:
@@ -335,8 +342,14 @@ class SubmissionSandbox:
             self._netns.stop()
             self._netns = None
             self._namespace = None
-        if self._box_dir is not None and not self.keep_workspace:
-            shutil.rmtree(self._box_dir, ignore_errors=True)
+        if self._workspace_mounted:
+            try:
+                unmount(self.workspace)
+                self._workspace_mounted = False
+            except (SandboxError, OSError, subprocess.TimeoutExpired) as error:
+                problems.append(str(error))
+        if self._box_dir is not None and not self._workspace_mounted:
+            shutil.rmtree(self._box_dir, ignore_errors=True)   # never through a workspace still mounted
             self._box_dir = None
         if self._lock_fd is not None:
             os.close(self._lock_fd)  # releases the slot

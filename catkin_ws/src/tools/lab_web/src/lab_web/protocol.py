@@ -79,9 +79,14 @@ def _number(frame, key, request_id, limit):
     value = frame.get(key)
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise ProtocolError("{} must be a number, got {}".format(key, json.dumps(value)[:40]), request_id)
-    if not math.isfinite(value) or abs(value) > limit:
-        raise ProtocolError("{} must be a finite number within +-{:g}, got {}".format(key, limit, value), request_id)
-    return float(value)
+    try:
+        number = float(value)
+    except OverflowError:   # an integer of hundreds of digits: JSON has no limit, a float does
+        number = math.inf
+    if not math.isfinite(number) or abs(number) > limit:
+        raise ProtocolError("{} must be a finite number within +-{:g}, got {}".format(
+            key, limit, json.dumps(value)[:40]), request_id)
+    return number
 
 
 def _name(frame, key, request_id):

@@ -41,6 +41,12 @@ from lab_web.thumbnail import jpeg_thumbnail
 GRAPH_PERIOD_S = 2.0
 SERVICE_WAIT_S = 2.0
 """A service that is not offered within this long is reported as not available."""
+MODEL_CALL_TIMEOUT_S = 10.0
+"""The simulator's /gazebo/* calls (spawn, move, delete, reset) answer at once: one that has not within this long
+is abandoned and reported."""
+DEFAULT_SERVICE_TIMEOUT_S = 120.0
+"""The service form's calls (~service_timeout): longer than any course service takes on purpose (the Week 4
+approach gives up after 60 s of sim time), short enough that a callback stuck for ever frees its worker."""
 CAMERA_PERIOD_S = 0.2
 ECHO_PERIOD_S = 0.2
 RTF_WINDOW_S = 1.0
@@ -79,9 +85,11 @@ class Versioned:
 
 
 class RosBridge:
-    """Create after rospy.init_node; `shutdown()` stops teleop (zero once) and the background threads."""
+    """Create after rospy.init_node; `shutdown()` stops teleop (zero once) and the background threads.
+    `service_timeout_s`: how long a service form call may take before it is abandoned."""
 
-    def __init__(self, robot_namespace=""):
+    def __init__(self, robot_namespace="", service_timeout_s=DEFAULT_SERVICE_TIMEOUT_S):
+        self._service_timeout_s = service_timeout_s
         self._ns = rosgraph.names.canonicalize_name(robot_namespace).rstrip("/") if robot_namespace else ""
         self._lock = threading.Lock()
         self._stop = threading.Event()
@@ -405,16 +413,36 @@ class RosBridge:
 
     # --- requests (blocking: the server runs them in worker threads) ----------------------------------
 
-    def _call(self, name, service_class, *args):
+    def _call(self, name, service_class, *args, timeout_s=MODEL_CALL_TIMEOUT_S):
+        """The reply of `name`, or BridgeError naming the service: not offered, failed, or no answer within
+        `timeout_s`. rospy's calls have no timeout, so the call's connection is shut when it expires, which ends
+        the wait in this thread (the service's own callback runs on; its late reply goes nowhere)."""
         try:
             rospy.wait_for_service(name, SERVICE_WAIT_S)
         except rospy.ROSException:
             raise BridgeError("{} is not available: is the simulator (or the node offering it) running?"
                               .format(name)) from None
+        proxy = rospy.ServiceProxy(name, service_class, persistent=True)   # persistent: close() reaches the socket
+        expired = threading.Event()
+
+        def expire():
+            expired.set()
+            proxy.close()
+        timer = threading.Timer(timeout_s, expire)
+        timer.daemon = True
+        timer.start()
         try:
-            return rospy.ServiceProxy(name, service_class)(*args)
-        except (rospy.ServiceException, rospy.ROSSerializationException) as error:
-            raise BridgeError("{} failed: {}".format(name, error)) from None
+            return proxy(*args)
+        except Exception as error:   # noqa: BLE001 - whatever the shut connection raised, the cause is the timeout
+            if expired.is_set():
+                raise BridgeError("{} did not answer within {:g} s: its node may be stuck in its callback (the call "
+                                  "was abandoned)".format(name, timeout_s)) from None
+            if isinstance(error, (rospy.ServiceException, rospy.ROSSerializationException)):
+                raise BridgeError("{} failed: {}".format(name, error)) from None
+            raise
+        finally:
+            timer.cancel()
+            proxy.close()
 
     def _model_names(self):
         with self._lock:
@@ -475,7 +503,8 @@ class RosBridge:
             request = service_class._request_class(**service_form.request_values(service_class._request_class, values))
         except service_form.FormError as error:
             raise BridgeError(str(error)) from None
-        return service_form.response_text(self._call(service, service_class, request))
+        return service_form.response_text(self._call(service, service_class, request,
+                                                     timeout_s=self._service_timeout_s))
 
     def shutdown(self):
         """Zero every target a page was driving, then stop the threads."""

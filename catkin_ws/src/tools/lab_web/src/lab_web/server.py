@@ -3,11 +3,14 @@
 No ROS import: it talks to a bridge (lab_web.ros_bridge.RosBridge, or any object with the same methods). Each
 page gets at most UPDATES_PER_S frames of state per second, only what changed since its last frame, and a slow
 page simply gets fewer (each send waits for the previous one). What a page sends is validated
-(lab_web.protocol); a bad frame gets an `error` frame back and changes nothing.
+(lab_web.protocol); a bad frame gets an `error` frame back and changes nothing. Every request whose Host header does
+not name this machine is refused first (DNS rebinding, see lab_web.access), then the page and the socket need the
+token when one is set, and the socket an Origin that is the page's own.
 """
 import asyncio
 import itertools
 import time
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from aiohttp import WSMsgType, web
@@ -22,6 +25,11 @@ FLOOD_BURST = 100
 """A page may send 50 frames per second (bursts of 100); extra frames are dropped with one error per second."""
 MAX_PENDING_REQUESTS = 2
 """Per page: service calls and model edits waiting for their reply."""
+REQUEST_WORKERS = 4
+"""Per kind of request (the service form's; the simulator's model edits and reset): threads that wait for
+replies. When all of a kind's are busy, a further request of that kind is refused at once, so services that hang
+cannot use up the threads the other kind, echo, camera and page departures need."""
+FORM_REQUESTS = ("service_fields", "call_service")
 HEARTBEAT_S = 5.0
 SECURITY_HEADERS = {
     "Content-Security-Policy": "default-src 'self'; img-src 'self' data: blob:; connect-src 'self' ws: wss:; "
@@ -62,12 +70,39 @@ class FloodGate:
         return False
 
 
-class PageSession:
-    """One open page: what it has been sent, and its socket."""
+class RequestPool:
+    """Worker threads for one kind of request that refuse work when all are busy instead of queueing it (used
+    from the event loop's thread only)."""
 
-    def __init__(self, bridge, socket):
+    def __init__(self, name, workers=REQUEST_WORKERS):
+        self.name = name
+        self.workers = workers
+        self._free = workers
+        self._executor = ThreadPoolExecutor(workers, thread_name_prefix="lab_web_" + name)
+
+    def submit(self, function, *args):
+        """An asyncio future of `function(*args)` in a worker, or None when every worker is busy."""
+        if self._free == 0:
+            return None
+        self._free -= 1
+        future = asyncio.get_running_loop().run_in_executor(self._executor, function, *args)
+        future.add_done_callback(self._release)
+        return future
+
+    def _release(self, _future):
+        self._free += 1
+
+    def shutdown(self):
+        self._executor.shutdown(wait=False, cancel_futures=True)
+
+
+class PageSession:
+    """One open page: what it has been sent, and its socket. `pools` maps a request type to its RequestPool."""
+
+    def __init__(self, bridge, socket, pools):
         self.owner = "page-{}".format(next(_session_ids))
         self.bridge = bridge
+        self.pools = pools
         self.socket = socket
         self.sent = {}            # Versioned attribute name -> version sent
         self.trail_cursor = None
@@ -150,13 +185,18 @@ class PageSession:
         elif self.pending >= MAX_PENDING_REQUESTS:
             await self.refuse(command.id, "busy: wait for the reply to an earlier request")
         else:
+            pool = self.pools[command.type]
+            future = pool.submit(REQUESTS[command.type], self.bridge, command.args)
+            if future is None:
+                await self.refuse(command.id, "busy: {} {} requests are waiting for their services to answer; try "
+                                              "again in a moment".format(pool.workers, pool.name))
+                return
             self.pending += 1
-            asyncio.ensure_future(self._request(command))
+            asyncio.ensure_future(self._request(command, future))
 
-    async def _request(self, command):
+    async def _request(self, command, future):
         try:
-            result = await asyncio.get_running_loop().run_in_executor(None, REQUESTS[command.type], self.bridge,
-                                                                      command.args)
+            result = await future
             await self.send(frame("reply", id=command.id, ok=True, text=result))
         except Exception as error:   # noqa: BLE001 - a failed request is a reply, never a dead server
             await self.refuse(command.id, str(error) or type(error).__name__)
@@ -184,9 +224,18 @@ def make_app(bridge, policy, static_dir):
     """The aiohttp application serving `static_dir` and the bridge to pages that `policy` admits."""
     static_dir = Path(static_dir)
     sessions = set()
+    form_pool, model_pool = RequestPool("service form"), RequestPool("simulator")
+    pools = {kind: form_pool if kind in FORM_REQUESTS else model_pool for kind in REQUESTS}
 
     def refused(text):
         return web.Response(status=403, text="lab_web: " + text + "\n")
+
+    @web.middleware
+    async def known_host(request, handler):
+        if not policy.allows_host(request.headers.get("Host")):
+            return refused("the Host header {!r} does not name this machine: open the URL lab_web printed "
+                           "(localhost or 127.0.0.1)".format(request.headers.get("Host", "")))
+        return await handler(request)
 
     async def index(request):
         if not policy.allows(request.query.get("token")):
@@ -201,7 +250,7 @@ def make_app(bridge, policy, static_dir):
             return refused("the WebSocket accepts only pages served by lab_web itself")
         ws = web.WebSocketResponse(max_msg_size=MAX_SOCKET_MESSAGE_BYTES, heartbeat=HEARTBEAT_S)
         await ws.prepare(request)
-        session = PageSession(bridge, ws)
+        session = PageSession(bridge, ws, pools)
         sessions.add(session)
         streamer = asyncio.ensure_future(session.stream())
         flood = FloodGate(time.monotonic())
@@ -228,9 +277,14 @@ def make_app(bridge, policy, static_dir):
         for session in list(sessions):
             await session.socket.close(message=b"lab_web is shutting down")
 
-    app = web.Application(client_max_size=64 * 1024)
+    async def stop_pools(app):
+        for pool in (form_pool, model_pool):
+            pool.shutdown()
+
+    app = web.Application(client_max_size=64 * 1024, middlewares=[known_host])
     app.router.add_get("/", index)
     app.router.add_get("/ws", socket)
     app.router.add_static("/static/", static_dir, show_index=False, follow_symlinks=False)
     app.on_shutdown.append(close_pages)
+    app.on_cleanup.append(stop_pools)
     return app

@@ -46,6 +46,9 @@ def _float(name, value):
         raise FormError("{} must be a number".format(name))
     try:
         number = float(value)
+    except OverflowError:   # an integer too large for a float
+        raise FormError("{} must be a number a float64 holds, got an integer of {} digits".format(
+            name, len(str(abs(value))))) from None
     except (TypeError, ValueError):
         raise FormError("{} must be a number, got {!r}".format(name, value)) from None
     if not math.isfinite(number) and not isinstance(value, str):

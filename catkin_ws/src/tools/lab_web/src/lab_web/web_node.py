@@ -1,10 +1,15 @@
-"""The lab_web node: reads its ~params, starts the ROS bridge and serves the page until Ctrl-C.
+"""The lab_web node: reads its ~params, starts the ROS bridge and serves the page until Ctrl-C. When roscore is
+restarted, it registers its topics and services with the new master (master_reconnect), as the lab's other nodes
+do, so the page's pose, teleop and graph come back by themselves.
 
 ~host (str, 127.0.0.1): the address to listen on; anything but loopback needs a token (see lab_web.access).
 ~port (int, 8080): the port; taken ports are reported with the launch argument that changes it.
 ~token (str, ""): the page's token when ~host is not loopback (empty: a random one, printed with the URL).
 ~robot_namespace (str, ""): the robot whose odom, scan, camera and cmd_vel the page shows and drives.
+~service_timeout (float, 120): seconds a service form call may take; one that has not answered by then is
+    abandoned and the page says which service did not answer.
 """
+import math
 import sys
 from pathlib import Path
 
@@ -13,8 +18,9 @@ import rospy
 from aiohttp import web
 
 from lab_web.access import AccessError, AccessPolicy
-from lab_web.ros_bridge import RosBridge
+from lab_web.ros_bridge import DEFAULT_SERVICE_TIMEOUT_S, RosBridge
 from lab_web.server import make_app
+from master_reconnect import keep_registered
 
 
 def static_dir():
@@ -28,10 +34,15 @@ def main():
         if isinstance(port, bool) or not isinstance(port, int) or not 1 <= port <= 65535:
             raise AccessError("port must be a number from 1 to 65535, got {!r}".format(port))
         policy = AccessPolicy(str(rospy.get_param("~host", "127.0.0.1")), str(rospy.get_param("~token", "")))
+        service_timeout = rospy.get_param("~service_timeout", DEFAULT_SERVICE_TIMEOUT_S)
+        if isinstance(service_timeout, bool) or not isinstance(service_timeout, (int, float)) \
+                or not 0 < service_timeout < math.inf:
+            raise AccessError("service_timeout must be a number of seconds > 0, got {!r}".format(service_timeout))
     except AccessError as error:
         rospy.logfatal("lab_web: %s", error)
         sys.exit(2)
-    bridge = RosBridge(str(rospy.get_param("~robot_namespace", "")))
+    bridge = RosBridge(str(rospy.get_param("~robot_namespace", "")), service_timeout)
+    keep_registered()
     if policy.warning():
         rospy.logwarn(policy.warning())
     rospy.loginfo("lab_web: open %s in a browser", policy.url(port))

@@ -66,3 +66,7 @@ class UnknownFrameError(SimError):
 
 class BadRequestError(SimError):
     """A service request holds NaN, inf or an otherwise unusable value."""
+
+
+class ModelLimitError(SimError):
+    """The world already holds world.MAX_MODELS models: another spawn is refused."""

@@ -5,6 +5,10 @@ time, 5000 of 1 ms is 5x, and max_update_rate 0 runs as fast as possible. Tutori
 setting those two numbers, so here their product sets the pacing (the node's real_time_factor, 0 = unpaced),
 while the physics step itself stays the simulator's own: the two numbers are kept and reported back as given.
 Gravity is kept and reported too; a 2D simulator has no use for it.
+
+Gazebo accepts any max_update_rate; here a product below MIN_REAL_TIME_FACTOR (0.01: one simulated second per
+100 wall seconds) is refused, because the loop would publish /clock once in hours or days (max_update_rate
+0.0001 with a 1 ms step waits about a day between steps) and every sim-time node would stand still.
 """
 
 import math
@@ -14,6 +18,7 @@ from typing import Tuple
 from tb3_sim.core.errors import BadRequestError
 
 GAZEBO_GRAVITY = (0.0, 0.0, -9.8)
+MIN_REAL_TIME_FACTOR = 0.01
 
 
 @dataclass(frozen=True)
@@ -42,6 +47,11 @@ def physics_properties(time_step_s, max_update_rate_hz, gravity):
     if not (math.isfinite(max_update_rate_hz) and max_update_rate_hz >= 0.0):
         raise BadRequestError(f"max_update_rate must be a finite rate >= 0 (0: as fast as possible), got "
                               f"{max_update_rate_hz}")
+    real_time_factor = time_step_s * max_update_rate_hz
+    if not (real_time_factor == 0.0 or MIN_REAL_TIME_FACTOR <= real_time_factor < math.inf):
+        raise BadRequestError(f"max_update_rate x time_step is the real-time factor and must be 0 (as fast as "
+                              f"possible) or in [{MIN_REAL_TIME_FACTOR}, inf), got {max_update_rate_hz} x "
+                              f"{time_step_s} = {real_time_factor:g}: the simulation would stand still")
     if not all(math.isfinite(g) for g in gravity):
         raise BadRequestError(f"gravity must hold finite numbers, got {tuple(gravity)}")
     return PhysicsProperties(float(time_step_s), float(max_update_rate_hz), tuple(float(g) for g in gravity))

@@ -273,9 +273,15 @@ class SimNode:
                     return   # Ctrl-C closed the publishers after the loop's shutdown check
                 raise
             if self._clock.ticked(now_s):
-                delay_s = self._pacer.delay(now_s, time.monotonic())
-                if delay_s:
-                    time.sleep(delay_s)
+                self._wait_for_pace(now_s, stop)
+
+    def _wait_for_pace(self, sim_s, stop):
+        """Sleep until the pacer lets `sim_s` go out, in waits of at most the pacer's max_sleep_s, so a stop
+        request or a new pacing (set_physics_properties) is seen within that time."""
+        while not rospy.is_shutdown():
+            delay_s = self._pacer.delay(sim_s, time.monotonic())
+            if not delay_s or stop.wait(delay_s):
+                return
 
 
 def run_with_window(node, stop):
