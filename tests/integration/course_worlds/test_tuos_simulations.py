@@ -1,8 +1,9 @@
 """`roslaunch tuos_simulations <world>.launch` for every world of the package: the original's model names and the
 robot at the launch file's spawn defaults (and at x_pos/y_pos/yaw given on the command line) in
 /gazebo/model_states, /scan reading the original's walls and pillars (2 cm) or nothing where the world has none,
-mystery_world headless by default with camera_search:=true starting the CameraSweep action server, and
-roslaunch refusing to start while TURTLEBOT3_MODEL is unset, as the original's bare $(env) does.
+mystery_world headless by default with camera_search:=true starting the CameraSweep action server,
+roslaunch refusing to start while TURTLEBOT3_MODEL is unset, as the original's bare $(env) does, and rviz.launch
+starting robot_state_publisher (50 Hz) and rviz (node tb3_rviz) for the model.
 
 Expected ranges come from the original's SDF numbers (roslab.scan_geometry), not from the lab's world files.
 Each launch runs on a master of its own at 10x real time (conftest.py)."""
@@ -10,6 +11,7 @@ import os
 import subprocess
 
 import rosgraph
+import yaml
 
 from roslab import wait_for_topic
 from roslab.scan_geometry import Disc, Rect
@@ -56,9 +58,27 @@ def test_simulator_is_headless_and_camera_search_starts_the_sweep_server(case, c
         wait_for_topic(case_master.uri, CAMERA_SWEEP_RESULT, timeout_s=30)
 
 
+def roslaunch_parse(option, launch_file, **env):
+    """`roslaunch <option> tuos_simulations <launch_file>` (--nodes, --dump-params: parse only, no master) with
+    TURTLEBOT3_MODEL as `env` says (unset when not given): the finished process, stderr in its stdout."""
+    environment = {k: v for k, v in os.environ.items() if k != "TURTLEBOT3_MODEL"}
+    environment.update(env)
+    return subprocess.run(["roslaunch", option, "tuos_simulations", launch_file], env=environment,
+                          stdout=subprocess.PIPE, stderr=subprocess.DEVNULL if env else subprocess.STDOUT,
+                          text=True, timeout=60)
+
+
 def test_roslaunch_refuses_to_start_without_turtlebot3_model():
-    env = {k: v for k, v in os.environ.items() if k != "TURTLEBOT3_MODEL"}
-    finished = subprocess.run(["roslaunch", "--nodes", "tuos_simulations", "nav_world.launch"], env=env,
-                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
+    finished = roslaunch_parse("--nodes", "nav_world.launch")
     assert finished.returncode != 0
     assert "environment variable 'TURTLEBOT3_MODEL' is not set" in finished.stdout
+
+
+def test_rviz_launch_runs_robot_state_publisher_at_50_hz_and_rviz_for_the_model():
+    """What rviz.launch starts (rviz itself under a virtual display is turtlebot3_description's test_model_launch,
+    with the same rviz and model.rviz)."""
+    assert roslaunch_parse("--nodes", "rviz.launch", TURTLEBOT3_MODEL="burger").stdout.split() == [
+        "/robot_state_publisher", "/tb3_rviz"]
+    params = yaml.safe_load(roslaunch_parse("--dump-params", "rviz.launch", TURTLEBOT3_MODEL="burger").stdout)
+    assert params["/robot_state_publisher/publish_frequency"] == 50.0
+    assert '<robot name="turtlebot3_burger"' in params["/robot_description"]
