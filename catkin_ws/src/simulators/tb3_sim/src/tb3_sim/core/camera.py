@@ -1,8 +1,10 @@
 """A level 2.5D pinhole camera: the TurtleBot3 Waffle's RealSense R200 as Gazebo simulates it, rendered with numpy.
 
 The world is a floor plan: vertical walls (segments) and vertical cylinders (circles), each standing on the floor
-up to its own height, plus a floor and a sky. The camera is level (no pitch, no roll) at `mount_height_m` above
-the floor, looking along `yaw` in the world's x-y plane (x ahead, y left, z up; yaw CCW from +x, radians).
+up to its own height, plus a floor and a sky. The floor is one flat colour (Gazebo's ground plane) or, for a world
+with a floor layer, its texture seen in perspective (`use_floor`, core.floor_texture). The camera is level (no
+pitch, no roll) at `mount_height_m` above the floor, looking along `yaw` in the world's x-y plane (x ahead, y left,
+z up; yaw CCW from +x, radians).
 
 What Gazebo does and this module copies (turtlebot3_description `turtlebot3_waffle.gazebo.xacro`, sensor
 `realsense_R200` of type depth with `libgazebo_ros_openni_kinect.so`; gazebo_ros_pkgs `gazebo_ros_camera_utils.cpp`
@@ -28,6 +30,8 @@ from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
+
+from tb3_sim.core.floor_texture import FloorSampler
 
 # The clip planes of both TurtleBot3 cameras (the sensors' values: core.turtlebot3 lists the rest). The Waffle's
 # xacro holds <hackBaseline> twice, 0.07 then 0; sdformat's Get() returns the first element. Its
@@ -268,13 +272,60 @@ class CameraRenderer:
         self._rgb = _RgbCanvas(width, height, self._floor_row, floor_rgb, sky_rgb)
         self._depth = _DepthCanvas(width, height, self._floor_depth_by_row(),
                                    max(self.near_clip_m, self.depth_min_m) / 2.0)
+        self._floor_sampler = None
+        floor_rows = max(0, height - self._floor_row)
+        self._coverage = np.empty((floor_rows, width), dtype=np.int8)
+        self._bare = np.empty((floor_rows, width), dtype=np.uint8)
+
+    def use_floor(self, texture):
+        """Draw the floor from `texture` (a floor_texture.FloorTexture: a floor of a world's floor layer, where the
+        ray meets it, and the background grey outside it) instead of the flat floor colour; None: flat again. Depth
+        is NaN where the floor plane is outside the floor rectangle, as Gazebo's depth camera sees no geometry
+        there."""
+        self._floor_sampler = None if texture is None else FloorSampler(self.intrinsics, self.mount_height_m,
+                                                                        self._floor_row, texture)
 
     def render(self, x, y, yaw, scene, depth=False):
         """Image of `scene` from the camera at world (x, y) looking along yaw (rad): a CameraFrame with rgb and,
         if `depth`, the depth image."""
         spans = self._visible_spans(self._hits(x, y, yaw, scene))
-        return CameraFrame(self._rgb.draw(spans), self._depth.draw(spans, self._depth_marks(spans.depth))
-                           if depth else None)
+        rgb = self._rgb.draw(spans)
+        depth_image = self._depth.draw(spans, self._depth_marks(spans.depth)) if depth else None
+        if self._floor_sampler is not None:
+            self._draw_floor(spans, x, y, yaw, rgb, depth_image)
+        return CameraFrame(rgb, depth_image)
+
+    def _draw_floor(self, spans, x, y, yaw, rgb, depth):
+        """Copies the sampled floor into the rows below the horizon where no object covers it."""
+        first = self._floor_row
+        if first >= self.intrinsics.height:
+            return
+        import cv2
+
+        floor = self._floor_sampler.sample(x, y, yaw, inside=depth is not None)
+        bare = self._bare_floor(spans)
+        cv2.copyTo(floor.rgb, bare, rgb[first:])
+        if depth is not None:
+            # Bare floor outside the floor rectangle: no geometry, no depth.
+            outside = cv2.compare(bare, floor.inside, cv2.CMP_GT)
+            depth[first:][outside != 0] = np.nan
+
+    def _bare_floor(self, spans):
+        """(rows below the horizon, W) uint8: 255 where no span covers the pixel (a running count of spans)."""
+        first, width = self._floor_row, self.intrinsics.width
+        covered = self._coverage
+        covered.fill(0)
+        start = np.maximum(spans.first, first) - first
+        end = spans.end - first
+        keep = end > start
+        flat = covered.reshape(-1)
+        flat[start[keep] * width + spans.column[keep]] += 1
+        inside = keep & (spans.end < self.intrinsics.height)
+        flat[end[inside] * width + spans.column[inside]] -= 1
+        _running_sum(covered)
+        import cv2
+
+        return cv2.compare(covered, 0, cv2.CMP_EQ, dst=self._bare)
 
     def _floor_depth_by_row(self):
         rows = np.arange(self.intrinsics.height, dtype=float)

@@ -159,3 +159,12 @@ _SUN_COS_FROM_VERTICAL = -_SUN_DIRECTION[2] / math.hypot(*_SUN_DIRECTION)
 _GROUND = GAZEBO_MATERIALS["Gazebo/Grey"]
 FLOOR_RGB = rgb_from_unit(a * _SCENE_AMBIENT + d * _SUN_DIFFUSE * _SUN_COS_FROM_VERTICAL
                     for a, d in zip(_GROUND.ambient, _GROUND.diffuse))
+
+# A world's floor layer (its base colour, image and markings) as Gazebo lights the course floors: their material has
+# ambient 0.5 and diffuse 1.0 under a sun of diffuse 0.8 coming from (-0.5, 0.1, -0.9), so a texel of colour c shows
+# c * (0.5 * 0.4 + 1.0 * 0.8 * 0.9 / |(-0.5, 0.1, -0.9)|) = c * 0.896. A pink #ff00ff line shows as (228, 0, 228),
+# yellow #ffff00 as (228, 228, 0): the hues stay, so ordinary HSV ranges still separate them.
+_FLOOR_AMBIENT, _FLOOR_DIFFUSE, _COURSE_SUN_DIFFUSE = 0.5, 1.0, 0.8
+_COURSE_SUN_DIRECTION = (-0.5, 0.1, -0.9)
+FLOOR_LIGHT = (_FLOOR_AMBIENT * _SCENE_AMBIENT + _FLOOR_DIFFUSE * _COURSE_SUN_DIFFUSE
+               * -_COURSE_SUN_DIRECTION[2] / math.sqrt(sum(c * c for c in _COURSE_SUN_DIRECTION)))

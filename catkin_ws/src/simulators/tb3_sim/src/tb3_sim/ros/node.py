@@ -46,9 +46,9 @@ Differences from Gazebo, on purpose:
 - /tf_static carries each robot's fixed joints (robot_state_publisher's job in Gazebo launches, which may run
   beside it: both publish the same transforms) unless ~publish_static_tf is false; the IMU message is in
   base_footprint, as Gazebo's URDF conversion leaves it.
-- The camera renders the 2D world in 2.5D (upright solids of each object's height and colour, flat floor and
-  sky, no textures, lights or shadows); /camera/depth/points is not published; camera_info is published to a
-  camera_info subscriber even when no image is taken.
+- The camera renders the 2D world in 2.5D (upright solids of each object's height and colour, a flat floor or
+  the world's floor layer in perspective, a sky; no wall textures, lights or shadows); /camera/depth/points is
+  not published; camera_info is published to a camera_info subscriber even when no image is taken.
 - set_model_state composes the pose with its reference frame (Gazebo has a known bug there); spawn and delete
   take effect within the call instead of after up to 10 s or 60 s.
 

@@ -18,7 +18,9 @@ slow down. Lazy: nothing is rendered while no image topic has a subscriber; a ca
 camera_info without a render (Gazebo publishes it only with images). Depth is rendered only while someone takes
 it.
 The picture is a 2.5D render of the 2D world (core.camera): walls, pillars and models as upright solids of their
-height and colour, a floor and a sky.
+height and colour, a floor and a sky. A world with a floor layer shows it in perspective, markings and image
+included, lit as Gazebo lights the course floors (core.floor_texture); the depth image then reads the floor's
+distance wherever the floor rectangle shows.
 """
 
 from typing import NamedTuple, Optional
@@ -75,6 +77,7 @@ class CameraOutput(Output):
         depth_min_m, depth_max_m = spec.depth_range_m or (None, None)
         self.renderer = CameraRenderer(self.intrinsics, spec.height_m, FLOOR_RGB, SKY_RGB, far_clip_m=spec.clip_far_m,
                                        near_clip_m=spec.clip_near_m, depth_min_m=depth_min_m, depth_max_m=depth_max_m)
+        self._floor = None
         self._depth_topic = naming.topic(DEPTH_TOPIC)
         topics = [
             Topic(naming.topic(RGB_TOPIC), Image, self._rgb_image, queued=True),
@@ -90,11 +93,24 @@ class CameraOutput(Output):
     def read(self, world, now_s, wanted):
         rgb = depth = None
         if wanted & self._image_topics:
+            self._see_floor(world.description.floor)
             pose = self.robot.pose
             x, y = pose.compose(self.spec.x_m, self.spec.y_m)
             rgb, depth = self.renderer.render(x, y, pose.yaw, camera_scene(world.obstacles(excluding=self.robot)),
                                               depth=self._depth_topic in wanted)
         return CameraReading(now_s, rgb, depth)
+
+    def _see_floor(self, floor):
+        """Give the renderer the world's floor layer (rasterised once, at the first image: about 1 s with a
+        detailed floor) or keep the plain ground plane when the world has none."""
+        if floor is not self._floor:
+            self._floor = floor
+            if floor is None:
+                self.renderer.use_floor(None)
+            else:
+                from tb3_sim.view.floor_raster import floor_texture  # Qt: loaded by worlds with a floor only
+
+                self.renderer.use_floor(floor_texture(floor))
 
     def _header(self, message, time_s):
         message.header.stamp = messages.stamp(time_s)
