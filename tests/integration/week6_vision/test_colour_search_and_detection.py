@@ -13,12 +13,13 @@ import rospy
 from gazebo_msgs.msg import ModelState
 from gazebo_msgs.srv import SetModelState
 
-from roslab import RosProcess, wait_for_topic, wait_until
+from roslab import RosProcess, wait_until
 from roslab.launch_args import CHEAP_CAMERA
 from roslab.master import node_path
 from roslab.robot_view import pose_of
 
-REAL_TIME_FACTOR = 10
+from .conftest import launch_course_world
+
 PILLARS = {"red": (0.6, 0.6), "green": (-0.6, 0.6), "turquoise": (-0.6, -0.6), "blue": (0.6, -0.6)}
 CAMERA_IN_BASE_M = (0.069, -0.047)   # camera_rgb_frame in base_footprint (turtlebot3_waffle.urdf.xacro)
 FACING_TOLERANCE_DEG = 2.5           # the search stops within 0.8 deg; 1 px of a 160 px image is 0.5 deg
@@ -27,13 +28,7 @@ PAUSE_S = 10.0                       # sim seconds facing each pillar: 1 s of wa
 
 @pytest.fixture(scope="module")
 def pillars(ros_master, probe):
-    ros_master.env["TURTLEBOT3_MODEL"] = "waffle"
-    ros_master.roslaunch("tuos_simulations", "coloured_pillars.launch", "gui:=false",
-                         f"real_time_factor:={REAL_TIME_FACTOR}", *CHEAP_CAMERA)
-    wait_for_topic(ros_master.uri, "/odom", timeout_s=60)
-    probe.subscribe("/odom", "nav_msgs/Odometry")
-    probe.subscribe("/rosout_agg", "rosgraph_msgs/Log")
-    return probe
+    return launch_course_world(ros_master, probe, "coloured_pillars.launch", *CHEAP_CAMERA)
 
 
 def bearing_error_deg(pose, target):

@@ -5,7 +5,7 @@ import colorsys
 import numpy as np
 import pytest
 
-from week6_vision.colour_masks import COLOUR_HUES, UnknownColour, centroid, colour_mask, colour_name
+from week6_vision.colour_masks import COLOUR_HUES, UnknownColour, centroid, colour_mask, colour_name, column_span
 
 GAZEBO_RGB = {"red": (255, 0, 0), "yellow": (255, 255, 0), "green": (0, 255, 0), "turquoise": (0, 255, 255),
               "blue": (0, 0, 255), "purple": (255, 0, 255)}
@@ -54,3 +54,10 @@ def test_centroid_of_a_blob_and_none_for_too_little():
     speck = np.zeros((100, 200), np.uint8)
     speck[0, 0] = 255
     assert centroid(speck) is None   # one pixel of 20000 is below the 0.1 % floor
+
+
+def test_column_span_is_the_share_of_the_width_between_the_outermost_pixels():
+    mask = np.zeros((10, 200), np.uint8)
+    assert column_span(mask) == 0.0
+    mask[3, 50] = mask[7, 149] = 255
+    assert column_span(mask) == 0.5

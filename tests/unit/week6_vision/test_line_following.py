@@ -36,3 +36,9 @@ def test_a_line_back_in_view_while_finishing_is_followed_again():
     assert follower.command(80.0, 80.0, 160, 2.0).status == "following"
     assert follower.command(None, 80.0, 160, 3.0).status == "finishing"
     assert follower.command(None, 80.0, 160, 6.0).status == "finishing"   # the coast starts again from 3.0
+
+
+def test_a_mark_across_the_line_is_crossed_straight():
+    follower = LineFollowing(linear=0.1)
+    assert follower.command(150.0, 80.0, 160, 0.0, span=0.9) == (0.1, 0.0, "crossing a mark")
+    assert follower.command(150.0, 80.0, 160, 0.1, span=0.3).status == "following"

@@ -6,13 +6,14 @@ Each frame from /camera/rgb/image_raw: keep the rows that show the floor 0.3-0.5
 for the line's colour (~colour, default pink: the course's magenta #ff00ff), take the mask's centroid and steer it
 onto the robot's centre line with a proportional controller (week6_vision.line_following), driving at ~linear
 m/s (default 0.1). The robot turns on the spot until it first sees the line, and stops over the line's end
-(it drives on blind for the 0.37 m between its centre and the floor the camera watches once the line is gone).
+(it drives on blind for the 0.37 m between its centre and the floor the camera watches once the line is gone);
+it drives straight over marks across the line (the START and FINISH bars).
 ~gain (1.5: rad/s per half image width of error), ~max_angular (1.0 rad/s).
 Publishes /cmd_vel; a zero Twist on shutdown (Ctrl-C).
 """
 import rospy
 
-from week6_vision.colour_masks import centroid, colour_mask, colour_name
+from week6_vision.colour_masks import centroid, colour_mask, colour_name, column_span
 from week6_vision.floor_view import centre_line_column, floor_rows
 from week6_vision.line_following import LineFollowing
 from week6_vision.ros_node import bgr_image, run, subscribe_camera, twist, velocity_publisher
@@ -35,10 +36,11 @@ class LineFollower:
             return
         height, width = image.shape[:2]
         first, end = floor_rows(width, height, NEAR_M, FAR_M)
-        line = centroid(colour_mask(image[first:end], self.colour))
+        mask = colour_mask(image[first:end], self.colour)
+        line = centroid(mask)
         target_x = centre_line_column(width, (NEAR_M + FAR_M) / 2)
         command = self.follow.command(None if line is None else line[0], target_x, width,
-                                      message.header.stamp.to_sec())
+                                      message.header.stamp.to_sec(), span=column_span(mask))
         if command.status != self.status:
             rospy.loginfo(f"Line follower: {command.status}.")
             self.status = command.status

@@ -56,3 +56,9 @@ def centroid(mask, min_fraction=0.001):
     if moments["m00"] < max(1.0, min_fraction * mask.size):
         return None
     return moments["m10"] / moments["m00"], moments["m01"] / moments["m00"]
+
+
+def column_span(mask):
+    """The fraction of the mask's width between its leftmost and rightmost white pixel (0 when it has none)."""
+    columns = np.flatnonzero(mask.any(axis=0))
+    return 0.0 if columns.size == 0 else (columns[-1] - columns[0] + 1) / mask.shape[1]
