@@ -17,7 +17,9 @@ from roslab import wait_for_topic
 from roslab.scan_geometry import Disc, Rect
 
 from .world_checks import (  # noqa: F401  (the shared tests run against this module's CASES)
+    FloorView,
     WorldCase,
+    test_camera_shows_the_floor_art_where_the_projection_puts_it,
     test_models_are_the_originals_and_the_robot_stands_at_the_spawn_pose,
     test_scan_reads_the_originals_walls_and_pillars,
 )
@@ -34,16 +36,24 @@ SQUARE_AND_PILLARS = (   # turtlebot3_square (4 x 0.15 boxes, inner faces +-1.85
 PILLARS_MODELS = ("ground_plane", "turtlebot3_square", "obstacle")
 EVERY_QUARTER = (0.0, 90.0, 180.0, 270.0)
 CAMERA_SWEEP_RESULT = "/camera_sweep_action_server/result"
+PINK, YELLOW, GREEN = (255, 0, 255), (255, 255, 0), (0, 255, 0)
+START_GREY = (0xcd, 0xcd, 0xcd)
+NAV_VIEWS = (
+    FloorView((-1.853, -1.608, -1.5708), (-1.900, -1.977), GREEN),   # inside zone A, looking at its disc
+    FloorView((0.409, -0.6, 1.5708), (0.456, -0.2), START_GREY))    # the START square, from its -y side
 
 CASES = [
     WorldCase("tuos_simulations", "nav_world.launch", ("gui:=false",), (0.5, -0.04, 0.0),
-              ("navigation", "arena_walls"), (0.0, 90.0, 180.0, 270.0, 315.0), ARENA_WALLS + NAVIGATION_WALLS),
+              ("navigation", "arena_walls"), (0.0, 90.0, 180.0, 270.0, 315.0), ARENA_WALLS + NAVIGATION_WALLS,
+              NAV_VIEWS),
     WorldCase("tuos_simulations", "line_following_setup.launch", ("gui:=false",), (0.5, -5.48, 1.57),
-              ("line_following_setup",), EVERY_QUARTER),
+              ("line_following_setup",), EVERY_QUARTER, (),
+              (FloorView((0.5, -5.48, 1.57), (0.0, -4.5), PINK), FloorView((0.5, -5.48, 1.57), (0.5, -5.0), YELLOW))),
     WorldCase("tuos_simulations", "line_following.launch", ("gui:=false",), (2.4, -2.5, 3.14),
-              ("line_following_track",), EVERY_QUARTER),
+              ("line_following_track",), EVERY_QUARTER, (), (FloorView((2.4, -2.5, 3.14), (1.88, -2.56), PINK),)),
     WorldCase("tuos_simulations", "line_following.launch", ("gui:=false", "x_pos:=3", "y_pos:=-3", "yaw:=0"),
-              (3.0, -3.0, 0.0), ("line_following_track",), EVERY_QUARTER),
+              (3.0, -3.0, 0.0), ("line_following_track",), EVERY_QUARTER, (),
+              (FloorView((3.0, -3.0, 0.0), (3.4, -3.0), YELLOW),)),   # yellow floor; no line in view
     WorldCase("tuos_simulations", "coloured_pillars.launch", ("gui:=false",), (0.0, 0.0, 0.0), PILLARS_MODELS,
               (0.0, 45.0, 90.0, 135.0, 180.0, 225.0, 270.0, 315.0), SQUARE_AND_PILLARS),
     # No gui argument: the original's default runs Gazebo headless.
