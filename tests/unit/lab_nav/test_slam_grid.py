@@ -2,8 +2,15 @@
 import numpy as np
 import pytest
 
-from lab_nav.slam.grid import (LOG_ODDS_HIT, LOG_ODDS_LIMITS, LOG_ODDS_MISS, PATCH_CELLS, SlamGrid, grown_geometry,
-                               initial_geometry)
+from lab_nav.slam.grid import (
+    LOG_ODDS_HIT,
+    LOG_ODDS_LIMITS,
+    LOG_ODDS_MISS,
+    PATCH_CELLS,
+    SlamGrid,
+    grown_geometry,
+    initial_geometry,
+)
 
 TB3 = initial_geometry(-10.0, -10.0, 10.0, 10.0, 0.05)
 

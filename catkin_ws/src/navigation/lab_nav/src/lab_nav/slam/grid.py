@@ -75,14 +75,14 @@ class SlamGrid:
         self._grow(np.append(ends_xy[:, 0], laser_xy[0]), np.append(ends_xy[:, 1], laser_xy[1]))
         if not len(ends_xy):
             return
-        passed = self._passed_cells(np.asarray(laser_xy, dtype=float), ends_xy, hit)
-        np.add.at(self.visits.ravel(), passed, 1)
-        np.add.at(self.log_odds.ravel(), passed, LOG_ODDS_MISS)
+        size = self.visits.size
+        passes = np.bincount(self._passed_cells(np.asarray(laser_xy, dtype=float), ends_xy, hit), minlength=size)
         cols, rows = self.geometry.world_to_cell(ends_xy[hit, 0], ends_xy[hit, 1])
-        ended = rows * self.geometry.width + cols
-        np.add.at(self.visits.ravel(), ended, 1)
-        np.add.at(self.hits.ravel(), ended, 1)
-        np.add.at(self.log_odds.ravel(), ended, LOG_ODDS_HIT)
+        ends = np.bincount(rows * self.geometry.width + cols, minlength=size)
+        shape = self.visits.shape
+        self.visits += (passes + ends).reshape(shape).astype(np.int32)
+        self.hits += ends.reshape(shape).astype(np.int32)
+        self.log_odds += (passes * LOG_ODDS_MISS + ends * LOG_ODDS_HIT).reshape(shape).astype(np.float32)
         np.clip(self.log_odds, *LOG_ODDS_LIMITS, out=self.log_odds)
 
     def occupancy(self, occ_thresh):

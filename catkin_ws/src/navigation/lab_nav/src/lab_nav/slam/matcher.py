@@ -87,9 +87,7 @@ class _LocalField:
         self.any_obstacle = bool(window.any())
         distance = distance_transform_edt(~window) * res if self.any_obstacle else None
         self.field = np.exp(-0.5 * (distance / sigma) ** 2) if self.any_obstacle else window.astype(float)
-        padded = np.pad(self.field, ((0, BLOCK_CELLS - 1), (0, BLOCK_CELLS - 1)))
-        windows = np.lib.stride_tricks.sliding_window_view(padded, (BLOCK_CELLS, BLOCK_CELLS))
-        self.coarse = windows.max(axis=(2, 3))
+        self.coarse = _block_maximum(_block_maximum(self.field, axis=0), axis=1)
         self.reach_cells = int(round(SEARCH_LINEAR_M / res / BLOCK_CELLS)) * BLOCK_CELLS
 
     def cells(self, points, guess, angles):
@@ -119,20 +117,22 @@ class _LocalField:
         return float(scores[i, j]), row_offset + i, col_offset + j
 
     def refine(self, points, pose, iterations):
-        """Gauss-Newton on sum(1 - field)^2 from `pose`; returns the better of the start and the result."""
-        best_pose, best_score = pose, self._interpolated(points, pose)[0].sum()
+        """Gauss-Newton on sum(1 - field)^2 from `pose`; returns the best pose met and its score."""
+        best_pose, best_score = tuple(pose), -1.0
         x = np.array(pose, dtype=float)
-        for _ in range(iterations):
+        for step in range(iterations + 1):
             values, grad_x, grad_y = self._interpolated(points, x)
+            score = float(values.sum())
+            if score > best_score:
+                best_pose, best_score = tuple(float(v) for v in x), score
+            if step == iterations:
+                break
             c, s = math.cos(x[2]), math.sin(x[2])
             d_theta = (-s * points[:, 0] - c * points[:, 1]) * grad_x + (c * points[:, 0] - s * points[:, 1]) * grad_y
             jacobian = np.column_stack((grad_x, grad_y, d_theta))
             hessian = jacobian.T @ jacobian + 1e-9 * np.eye(3)
             x = x + np.linalg.solve(hessian, jacobian.T @ (1.0 - values))
-            score = self._interpolated(points, x)[0].sum()
-            if score > best_score:
-                best_pose, best_score = tuple(float(v) for v in x), score
-        return best_pose, float(best_score)
+        return best_pose, best_score
 
     def _interpolated(self, points, pose):
         """Bilinear field values at the points placed at `pose`, and the field's x/y gradient (per m) there."""
@@ -144,19 +144,25 @@ class _LocalField:
         fy = (ys - self.geometry.origin_y) / res - 0.5 - self.row0
         c0, r0 = np.floor(fx).astype(int), np.floor(fy).astype(int)
         tx, ty = fx - c0, fy - r0
-        f00, f01 = _lookup(self.field, r0, c0), _lookup(self.field, r0, c0 + 1)
-        f10, f11 = _lookup(self.field, r0 + 1, c0), _lookup(self.field, r0 + 1, c0 + 1)
+        width = self.field.shape[1]
+        flat = self.field.ravel()
+        index = r0 * width + c0
+        f00, f01 = flat.take(index, mode="clip"), flat.take(index + 1, mode="clip")
+        f10, f11 = flat.take(index + width, mode="clip"), flat.take(index + width + 1, mode="clip")
         values = (f00 * (1 - tx) + f01 * tx) * (1 - ty) + (f10 * (1 - tx) + f11 * tx) * ty
         grad_x = ((f01 - f00) * (1 - ty) + (f11 - f10) * ty) / res
         grad_y = ((f10 - f00) * (1 - tx) + (f11 - f01) * tx) / res
         return values, grad_x, grad_y
 
 
-def _lookup(grid, rows, cols):
-    """grid[rows, cols], 0 outside the grid."""
-    inside = (rows >= 0) & (rows < grid.shape[0]) & (cols >= 0) & (cols < grid.shape[1])
-    values = grid[np.clip(rows, 0, grid.shape[0] - 1), np.clip(cols, 0, grid.shape[1] - 1)]
-    return np.where(inside, values, 0.0)
+def _block_maximum(values, axis):
+    """m[i] = max(values[i : i + BLOCK_CELLS]) along `axis`, zeros past the end."""
+    padded = np.pad(values, [(0, BLOCK_CELLS - 1) if a == axis else (0, 0) for a in range(values.ndim)])
+    length = values.shape[axis]
+    result = values.copy()
+    for shift in range(1, BLOCK_CELLS):
+        np.maximum(result, padded.take(np.arange(shift, shift + length), axis=axis), out=result)
+    return result
 
 
 def _search_angles(resolution, reach):
