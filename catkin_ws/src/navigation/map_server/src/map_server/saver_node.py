@@ -6,7 +6,8 @@ directory, logs the original's lines ("Waiting for the map", "Received a W X H m
 occupancy data to ..." twice, "Done" and a blank line) and exits 0. A file that cannot be written logs
 "Couldn't save map file to PATH" and it waits for the next map, as the original does for the PGM (for the YAML
 the original would crash). A map whose data does not fill width x height is refused the same way, with the
-reason. It waits forever when no map comes; Ctrl-C ends it with exit code 0.
+reason. It waits forever when no map comes; Ctrl-C ends it with exit code 0. Console lines are in roscpp's
+format, as the C++ original prints them.
 """
 
 import sys
@@ -17,7 +18,7 @@ from nav_msgs.msg import OccupancyGrid
 
 from lab_nav.maps.map_saver_files import pgm_bytes, quaternion_yaw, yaml_text
 from map_server.command_line import CommandLineExit, parse_saver_args
-from map_server.console import error_line
+from map_server.console import error_line, use_roscpp_console
 from map_server.messages import message_cells
 
 SAVED_POLL_S = 0.1   # wall time between looks at whether the map was saved or the node shut down
@@ -71,6 +72,7 @@ def main(argv=None):
             error_line(stop.error)
         return stop.code
     rospy.init_node("map_saver")
+    use_roscpp_console()
     saver = MapSaver(options)
     while not saver.saved.wait(SAVED_POLL_S) and not rospy.is_shutdown():
         pass

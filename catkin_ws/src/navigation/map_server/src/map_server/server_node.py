@@ -7,7 +7,7 @@ answers the map and logs "Sending map"; /change_map (nav_msgs/LoadMap) loads ano
 answering result 0 (SUCCESS) with the map, or 255 (UNDEFINED_FAILURE) after logging why. ~frame_id (default
 "map") is the header's frame. The deprecated `map_server IMAGE RESOLUTION` form reads ~negate (0),
 ~occupied_thresh (0.65) and ~free_thresh (0.196) and uses origin 0. Any error in the first map logs
-map_server's own ERROR line and exits 255.
+map_server's own ERROR line and exits 255. Console lines are in roscpp's format, as the C++ original prints them.
 """
 
 import sys
@@ -21,7 +21,7 @@ from lab_nav.maps.errors import MapFileError
 from lab_nav.maps.map_loader import DEPRECATED_DEFAULTS, deprecated_description, load_image_map
 from lab_nav.maps.map_yaml import read_map_yaml
 from map_server.command_line import EXIT_SERVER_ERROR, SERVER_DEPRECATED_WARNING, CommandLineExit, parse_server_args
-from map_server.console import error_line
+from map_server.console import error_line, use_roscpp_console
 from map_server.messages import grid_message
 
 VALID_TIME_POLL_S = 0.01   # wall time between looks at the clock while ROS time is still 0
@@ -100,6 +100,7 @@ def main(argv=None):
         error_line(stop.error)
         return stop.code
     rospy.init_node("map_server_{}".format(time.time_ns()))
+    use_roscpp_console()
     if len(argv) == 3:
         rospy.logwarn(SERVER_DEPRECATED_WARNING)
     try:
