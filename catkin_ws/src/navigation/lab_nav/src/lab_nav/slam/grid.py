@@ -75,15 +75,20 @@ class SlamGrid:
         self._grow(np.append(ends_xy[:, 0], laser_xy[0]), np.append(ends_xy[:, 1], laser_xy[1]))
         if not len(ends_xy):
             return
-        size = self.visits.size
-        passes = np.bincount(self._passed_cells(np.asarray(laser_xy, dtype=float), ends_xy, hit), minlength=size)
-        cols, rows = self.geometry.world_to_cell(ends_xy[hit, 0], ends_xy[hit, 1])
-        ends = np.bincount(rows * self.geometry.width + cols, minlength=size)
-        shape = self.visits.shape
-        self.visits += (passes + ends).reshape(shape).astype(np.int32)
-        self.hits += ends.reshape(shape).astype(np.int32)
-        self.log_odds += (passes * LOG_ODDS_MISS + ends * LOG_ODDS_HIT).reshape(shape).astype(np.float32)
-        np.clip(self.log_odds, *LOG_ODDS_LIMITS, out=self.log_odds)
+        passed_cols, passed_rows = self._passed_cells(np.asarray(laser_xy, dtype=float), ends_xy, hit)
+        hit_cols, hit_rows = self.geometry.world_to_cell(ends_xy[hit, 0], ends_xy[hit, 1])
+        # Count on the scan's bounding box only: a scan touches a few metres of a map that may be much larger.
+        all_cols, all_rows = np.append(passed_cols, hit_cols), np.append(passed_rows, hit_rows)
+        col0, row0 = all_cols.min(), all_rows.min()
+        box = (all_rows.max() - row0 + 1, all_cols.max() - col0 + 1)
+        passes = np.bincount((passed_rows - row0) * box[1] + passed_cols - col0, minlength=box[0] * box[1])
+        ends = np.bincount((hit_rows - row0) * box[1] + hit_cols - col0, minlength=box[0] * box[1])
+        window = np.s_[row0:row0 + box[0], col0:col0 + box[1]]
+        self.visits[window] += (passes + ends).reshape(box).astype(np.int32)
+        self.hits[window] += ends.reshape(box).astype(np.int32)
+        log_odds = self.log_odds[window]
+        log_odds += (passes * LOG_ODDS_MISS + ends * LOG_ODDS_HIT).reshape(box).astype(np.float32)
+        np.clip(log_odds, *LOG_ODDS_LIMITS, out=log_odds)
 
     def occupancy(self, occ_thresh):
         """int8 array [row, col] of -1 / 0 / 100 as gmapping publishes its cells."""
@@ -98,7 +103,7 @@ class SlamGrid:
         return self.log_odds > 0.0
 
     def _passed_cells(self, start, ends, hit):
-        """Flat indices of the cells each beam passes through, once per beam, without a hit beam's end cell."""
+        """(cols, rows) of the cells each beam passes through, once per beam, without a hit beam's end cell."""
         geometry = self.geometry
         lengths = np.hypot(*(ends - start).T)
         samples = int(np.ceil(lengths.max() / geometry.resolution * SAMPLES_PER_CELL)) + 1
@@ -107,11 +112,11 @@ class SlamGrid:
         ys = start[1] + np.outer(ends[:, 1] - start[1], fractions)
         cols, rows = geometry.world_to_cell(xs, ys)
         flat = rows * geometry.width + cols
-        end_cell = flat[:, -1:]
-        keep = ~(hit[:, None] & (flat == end_cell))
+        keep = ~(hit[:, None] & (flat == flat[:, -1:]))
         beam = np.broadcast_to(np.arange(len(ends))[:, None], flat.shape)
         cells = geometry.width * geometry.height
-        return np.unique(beam[keep].astype(np.int64) * cells + flat[keep]) % cells
+        flat = np.unique(beam[keep].astype(np.int64) * cells + flat[keep]) % cells
+        return flat % geometry.width, flat // geometry.width
 
     def _grow(self, xs, ys):
         geometry, (col_shift, row_shift) = grown_geometry(self.geometry, xs, ys)
