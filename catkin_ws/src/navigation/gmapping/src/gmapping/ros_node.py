@@ -44,6 +44,7 @@ class SlamNode:
         self._lock = threading.Lock()
         self._last_map = None
         self._laser = None  # (laser pose on the base, upside down) once the laser's mounting is known
+        self._last_scan_stamp = None
         self._tf_buffer = tf2_ros.Buffer(cache_time=rospy.Duration(TF_CACHE_S))
         self._tf_listener = tf2_ros.TransformListener(self._tf_buffer)
         self._tf_broadcaster = tf2_ros.TransformBroadcaster()
@@ -75,6 +76,11 @@ class SlamNode:
                 break
 
     def _on_scan(self, scan):
+        if self._last_scan_stamp is not None and scan.header.stamp < self._last_scan_stamp:
+            # The listener clears TF's buffer when the clock jumps back, but transforms stamped before the jump
+            # can still arrive after it, and the buffer would then refuse all newer data as too old.
+            self._tf_buffer.clear()
+        self._last_scan_stamp = scan.header.stamp
         try:
             odom = self._tf_buffer.lookup_transform(self.params.odom_frame, self.params.base_frame,
                                                     scan.header.stamp, rospy.Duration(TF_WAIT_S))
@@ -121,6 +127,9 @@ class SlamNode:
         if outcome.clock_jumped_back:
             rospy.logwarn("slam_gmapping: the clock jumped back (simulation reset?): keeping the map, "
                           "restarting the update timing")
+        if outcome.odometry_jumped:
+            rospy.logwarn("slam_gmapping: the odometry jumped (a teleport or a reset?): the scans across the jump "
+                          "are left out")
         if not outcome.processed:
             return
         if outcome.match is None:

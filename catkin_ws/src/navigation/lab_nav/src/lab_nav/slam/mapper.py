@@ -11,6 +11,9 @@ scan when it is the first, or when the scan is more than map_update_interval aft
 
 The clock going backwards (a simulator reset) restarts the timing - the next scan is processed and a map sent -
 but keeps the map and the correction: the world has not changed and odometry still lives in the same frame.
+Odometry that jumps between two scans (a teleport or a reset: farther than a robot can move in that time) leaves
+that scan out, and the next: TF interpolates the pose of a scan taken across the jump, so it would go into the
+map at a pose the robot never had.
 """
 
 from dataclasses import dataclass
@@ -22,6 +25,12 @@ from lab_nav.slam import pose as poses
 from lab_nav.slam.beams import scan_beams
 from lab_nav.slam.grid import SlamGrid, initial_geometry
 from lab_nav.slam.matcher import Match, ScanMatcher
+
+# Odometry moving farther than this between two scans (at least JUMP_M / JUMP_RAD) is a jump, not motion.
+JUMP_SPEED_MPS = 2.0
+JUMP_TURN_RADPS = 5.0
+JUMP_M = 0.5
+JUMP_RAD = 1.0
 
 
 @dataclass(frozen=True)
@@ -45,6 +54,7 @@ class ScanOutcome:
     match: Optional[Match] = None
     matched: bool = False
     clock_jumped_back: bool = False
+    odometry_jumped: bool = False
 
 
 class Slam:
@@ -59,6 +69,8 @@ class Slam:
         self.entropy = 0.0
         self._scans_seen = 0
         self._last_stamp = None
+        self._last_scan_odom = None
+        self._settling = False
         self._last_odom = None
         self._travel = self._rotation = 0.0
         self._last_processed_stamp = None
@@ -74,7 +86,12 @@ class Slam:
         jumped = self._last_stamp is not None and scan.stamp < self._last_stamp
         if jumped:
             self._restart_timing()
-        self._last_stamp = scan.stamp
+        odometry_jumped = self._odometry_jumped(scan.stamp, odom_pose, jumped)
+        self._last_stamp, self._last_scan_odom = scan.stamp, odom_pose
+        if odometry_jumped or self._settling:
+            self._settling = odometry_jumped
+            self._last_odom = odom_pose
+            return ScanOutcome(clock_jumped_back=jumped, odometry_jumped=odometry_jumped)
         self._scans_seen += 1
         if (self._scans_seen - 1) % self.params.throttle_scans:
             return ScanOutcome(clock_jumped_back=jumped)
@@ -90,6 +107,14 @@ class Slam:
     def occupancy(self):
         """The map as gmapping publishes it: int8 [row, col] of -1/0/100, and its MapGeometry."""
         return self.grid.occupancy(self.params.occ_thresh), self.grid.geometry
+
+    def _odometry_jumped(self, stamp, odom_pose, clock_jumped):
+        if self._last_scan_odom is None:
+            return False
+        dx, dy, dtheta = poses.between(self._last_scan_odom, odom_pose)
+        elapsed = 0.0 if clock_jumped else max(stamp - self._last_stamp, 0.0)
+        return bool(np.hypot(dx, dy) > max(JUMP_M, JUMP_SPEED_MPS * elapsed)
+                    or abs(dtheta) > max(JUMP_RAD, JUMP_TURN_RADPS * elapsed))
 
     def _restart_timing(self):
         self._last_odom = None
