@@ -26,11 +26,13 @@ from lab_nav.slam.beams import scan_beams
 from lab_nav.slam.grid import SlamGrid, initial_geometry
 from lab_nav.slam.matcher import Match, ScanMatcher
 
-# Odometry moving farther than this between two scans (at least JUMP_M / JUMP_RAD) is a jump, not motion.
-JUMP_SPEED_MPS = 2.0
-JUMP_TURN_RADPS = 5.0
+# Odometry moving farther than this between two scans (at least JUMP_M / JUMP_RAD, at most as far as in
+# JUMP_WINDOW_S: a node that falls behind sees scans far apart) is a jump, not motion.
+JUMP_SPEED_MPS = 1.0
+JUMP_TURN_RADPS = 4.0
 JUMP_M = 0.5
 JUMP_RAD = 1.0
+JUMP_WINDOW_S = 1.5
 
 
 @dataclass(frozen=True)
@@ -112,7 +114,7 @@ class Slam:
         if self._last_scan_odom is None:
             return False
         dx, dy, dtheta = poses.between(self._last_scan_odom, odom_pose)
-        elapsed = 0.0 if clock_jumped else max(stamp - self._last_stamp, 0.0)
+        elapsed = 0.0 if clock_jumped else min(max(stamp - self._last_stamp, 0.0), JUMP_WINDOW_S)
         return bool(np.hypot(dx, dy) > max(JUMP_M, JUMP_SPEED_MPS * elapsed)
                     or abs(dtheta) > max(JUMP_RAD, JUMP_TURN_RADPS * elapsed))
 
