@@ -122,3 +122,19 @@ def test_unknown_params_are_ignored_and_frames_lose_a_leading_slash():
     params = params_from_dict({"delta_l": 3, "base_frame": "/base_footprint"})
     assert params.base_frame == "base_footprint" and params.tf_delay == params.transform_publish_period
     assert params.ranges_for(3.5) == (3.49, 3.49)
+
+
+def test_a_teleport_leaves_the_scans_across_the_jump_out_and_keeps_the_map(room):
+    slam = _slam(temporalUpdate=0.0)
+    for i in range(5):
+        slam.add_scan(_scan(room, 0.2 * i, (-2.0, -1.5, 0.0)), (-2.0, -1.5, 0.0), LASER_ON_BASE)
+    # TF interpolates the odometry of the scan taken across the jump: half way, where the robot never was.
+    halfway, target = (-0.5, -0.5, 0.5), (1.0, 0.5, 1.0)
+    outcomes = [slam.add_scan(_scan(room, 1.0, halfway), halfway, LASER_ON_BASE),
+                slam.add_scan(_scan(room, 1.2, target), target, LASER_ON_BASE),
+                slam.add_scan(_scan(room, 1.4, target), target, LASER_ON_BASE),
+                slam.add_scan(_scan(room, 1.6, target), target, LASER_ON_BASE)]
+    assert [o.odometry_jumped for o in outcomes] == [True, True, False, False]
+    assert [o.processed for o in outcomes] == [False, False, False, True]
+    estimate = slam.map_pose(target)
+    assert math.hypot(estimate[0] - target[0], estimate[1] - target[1]) < 0.05
