@@ -56,24 +56,28 @@ class Mapping:
         self.world_name = world_name
         self.odometry_error = odometry_error
         self.processes = []
-        api = rosgraph.Master("/test", master_uri=ros_master.uri)
-        for name in ODOMETRY_ERROR:
-            api.setParam(f"/gazebo/{name}", ODOMETRY_ERROR[name] if odometry_error else 0.0)
-        self.world = self._start(["roslaunch", "--wait", "turtlebot3_gazebo", f"{world_name}.launch", "gui:=false",
-                                  f"real_time_factor:={REAL_TIME_FACTOR}"], "world", ros_master.env)
-        wait_for_service(ros_master.uri, "/gazebo/get_model_state", STARTUP_TIMEOUT_S)
-        wait_for_param(ros_master.uri, "/use_sim_time")
-        self.slam = self._start(["roslaunch", "--wait", "turtlebot3_slam", "turtlebot3_slam.launch"], "slam",
-                                _no_display_env(ros_master))
-        if odometry_error:
-            self._start_odometry_only(api)
-        wait_for_service(ros_master.uri, "/dynamic_map", STARTUP_TIMEOUT_S)
-        wait_until(lambda: _try_map("/dynamic_map") is not None, 30, "the first map")
-        self.route_file = ros_master.workdir / f"route-{world_name}.json"
-        driver = self._start([sys.executable, str(DRIVER), world_name, str(self.route_file)], "driver",
-                             ros_master.env)
-        wait_until(lambda: not driver.running(), 240, "the scripted drive to finish")
-        assert "done" in driver.output(), driver.output()
+        try:
+            api = rosgraph.Master("/test", master_uri=ros_master.uri)
+            for name in ODOMETRY_ERROR:
+                api.setParam(f"/gazebo/{name}", ODOMETRY_ERROR[name] if odometry_error else 0.0)
+            self.world = self._start(["roslaunch", "--wait", "turtlebot3_gazebo", f"{world_name}.launch", "gui:=false",
+                                      f"real_time_factor:={REAL_TIME_FACTOR}"], "world", ros_master.env)
+            wait_for_service(ros_master.uri, "/gazebo/get_model_state", STARTUP_TIMEOUT_S)
+            wait_for_param(ros_master.uri, "/use_sim_time")
+            self.slam = self._start(["roslaunch", "--wait", "turtlebot3_slam", "turtlebot3_slam.launch"], "slam",
+                                    _no_display_env(ros_master))
+            if odometry_error:
+                self._start_odometry_only(api)
+            wait_for_service(ros_master.uri, "/dynamic_map", STARTUP_TIMEOUT_S)
+            wait_until(lambda: _try_map("/dynamic_map") is not None, 30, "the first map")
+            self.route_file = ros_master.workdir / f"route-{world_name}.json"
+            driver = self._start([sys.executable, str(DRIVER), world_name, str(self.route_file)], "driver",
+                                 ros_master.env)
+            wait_until(lambda: not driver.running(), 240, "the scripted drive to finish")
+            assert "done" in driver.output(), driver.output()
+        except BaseException:   # a start that fails (or Ctrl-C) must not leave the simulator running
+            self._stop_processes()
+            raise
 
     def _start(self, command, label, env):
         log = self.master.workdir / f"{self.world_name}{'-error' if self.odometry_error else ''}-{label}.log"
@@ -102,10 +106,13 @@ class Mapping:
         return (map_quality.precision(values, geometry, walls, TOLERANCE_M),
                 map_quality.recall(values, geometry, walls, self.route_lasers(), REACH_M, TOLERANCE_M))
 
-    def close(self):
+    def _stop_processes(self):
         for process in reversed(self.processes):
             process.stop()
         self.processes = []
+
+    def close(self):
+        self._stop_processes()
         wait_for_service_gone(self.master.uri, "/gazebo/get_model_state")
 
 
