@@ -23,6 +23,12 @@ Private parameters (all optional; see `tb3_sim.ros.node` for what each one does)
     ~camera_width            model's    camera image width in pixels, 16..4096 (Waffle's R200 1920, Waffle Pi 640)
     ~camera_height           model's    camera image height in pixels, 16..4096 (1080, 480)
     ~camera_rate             model's    camera frames per second of sim time, (0, 1000] (30)
+    ~odom_scale_error        0.0        odometry error, off by default (Gazebo's odometry is the true pose): the
+                                        fraction by which /odom overstates distance (0.02: 2 %), in [-0.5, 0.5]
+    ~odom_heading_drift      0.0        ... heading error added per metre travelled (rad/m; 1 deg/m = 0.01745)
+    ~odom_heading_noise      0.0        ... seeded random heading walk (rad per sqrt(m), >= 0; seed: ~seed)
+                                        (see core.odometry_error; set them before the node starts, e.g.
+                                        `rosparam set /gazebo/odom_scale_error 0.02`)
 The camera settings apply to every robot that has a camera; unset, each camera keeps its model's own.
 """
 
@@ -32,6 +38,7 @@ from pathlib import Path
 from typing import Optional
 
 from tb3_sim.core.errors import ConfigError
+from tb3_sim.core.odometry_error import OdometryErrorModel
 from tb3_sim.core.turtlebot3 import DEFAULT_MODEL, TURTLEBOT3_MODELS
 
 DEFAULT_WORLD = "empty"
@@ -42,6 +49,7 @@ GAZEBO_WORLD_SUFFIX = ".world"
 DEFAULT_CLOCK_RATE_HZ = 100.0
 CAMERA_SIZE_RANGE_PX = (16, 4096)
 MAX_CAMERA_RATE_HZ = 1000.0
+MAX_ODOM_SCALE_ERROR = 0.5
 
 
 @dataclass(frozen=True)
@@ -67,6 +75,7 @@ class SimConfig:
     camera_width: Optional[int] = None
     camera_height: Optional[int] = None
     camera_rate: Optional[float] = None
+    odometry_error: OdometryErrorModel = OdometryErrorModel()
 
 
 def resolve_world(value, worlds_dir):
@@ -119,6 +128,11 @@ def config_from_params(params, worlds_dir):
         camera_height=reader.optional(reader.integer, "camera_height", CAMERA_SIZE_RANGE_PX),
         camera_rate=reader.optional(reader.number, "camera_rate", minimum=0.0, maximum=MAX_CAMERA_RATE_HZ,
                                     exclusive_minimum=True),
+        odometry_error=OdometryErrorModel(
+            scale_error=reader.number("odom_scale_error", 0.0, minimum=-MAX_ODOM_SCALE_ERROR,
+                                      maximum=MAX_ODOM_SCALE_ERROR),
+            heading_drift=reader.number("odom_heading_drift", 0.0),
+            heading_noise=reader.number("odom_heading_noise", 0.0, minimum=0.0)),
     )
 
 

@@ -1,6 +1,8 @@
 """A robot's odom, /tf (odom -> base_footprint) and joint_states at 30 Hz of sim time: the diff-drive plugin's
-updateRate. Not lazy, as the plugin publishes whether or not anyone listens; a message is built only for a topic
-with subscribers. Frames: `odom` -> `base_footprint` with the robot's tf_prefix (see messages, robot_naming)."""
+updateRate. The pose is the true one (as Gazebo's, odometrySource world) or, with an odometry error configured
+(core.odometry_error), a drifting one; the twist is always the true one. Not lazy, as the plugin publishes whether
+or not anyone listens; a message is built only for a topic with subscribers. Frames: `odom` -> `base_footprint`
+with the robot's tf_prefix (see messages, robot_naming)."""
 
 from typing import NamedTuple, Tuple
 
@@ -29,9 +31,11 @@ class OdometryOutput(Output):
     rate_hz = DRIVE_UPDATE_RATE_HZ
     lazy = False
 
-    def __init__(self, robot, naming):
+    def __init__(self, robot, naming, drift=None):
+        """`drift`: a core.odometry_error.DriftingOdometry, or None for the true pose."""
         super().__init__()
         self.robot = robot
+        self.drift = drift
         frames = (naming.frame(messages.ODOM_FRAME), naming.frame(messages.BASE_FRAME))
         self.frame_ids = frames
         self.topics = (
@@ -44,4 +48,14 @@ class OdometryOutput(Output):
 
     def read(self, world, now_s, wanted):
         robot = self.robot
-        return DriveReading(now_s, robot.pose, robot.twist_body, robot.drive.wheel_angles)
+        pose = robot.pose if self.drift is None else self.drift.pose(robot.pose)
+        return DriveReading(now_s, pose, robot.twist_body, robot.drive.wheel_angles)
+
+    def reset(self, now_s):
+        super().reset(now_s)
+        if self.drift is not None:
+            self.drift.restart()
+
+    def forget_motion(self):
+        if self.drift is not None:
+            self.drift.jumped()

@@ -5,6 +5,7 @@ so a subscriber on /use_sim_time has the new time before any message stamped wit
 """
 
 from tb3_sim.core.lidar import Lidar
+from tb3_sim.core.odometry_error import DriftingOdometry
 from tb3_sim.ros.outputs.camera import CameraOutput
 from tb3_sim.ros.outputs.clock import ClockOutput
 from tb3_sim.ros.outputs.imu import ImuOutput
@@ -27,9 +28,10 @@ def world_outputs(config):
 
 def robot_outputs(config, robot, naming, index):
     """A fresh instance of every output of `robot` (a core.robot.Robot), the `index`-th robot (its LiDAR noise
-    stream is the config's seed + index), set up from `config` (a ros.config.SimConfig)."""
+    stream, and its odometry error's, is the config's seed + index), set up from `config` (a ros.config.SimConfig)."""
+    drift = DriftingOdometry(config.odometry_error, config.seed + index) if config.odometry_error.enabled else None
     outputs = [
-        OdometryOutput(robot, naming),
+        OdometryOutput(robot, naming, drift),
         ScanOutput(robot, naming, Lidar(config.seed + index, sees_low_objects=config.lidar_sees_low_objects)),
         ImuOutput(robot, naming),
     ]
