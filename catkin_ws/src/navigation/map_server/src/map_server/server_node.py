@@ -1,0 +1,114 @@
+"""`rosrun map_server map_server MAP.yaml`: map_server's node, over lab_nav.maps.
+
+Node name map_server_<wall nsec> when run bare (roscpp's anonymous name), the launch file's name otherwise.
+Loads the map, waits for valid ROS time (under /use_sim_time, for /clock), then publishes /map and
+/map_metadata once, latched, with header.stamp = map_load_time = that time. /static_map (nav_msgs/GetMap)
+answers the map and logs "Sending map"; /change_map (nav_msgs/LoadMap) loads another YAML and publishes it again,
+answering result 0 (SUCCESS) with the map, or 255 (UNDEFINED_FAILURE) after logging why. ~frame_id (default
+"map") is the header's frame. The deprecated `map_server IMAGE RESOLUTION` form reads ~negate (0),
+~occupied_thresh (0.65) and ~free_thresh (0.196) and uses origin 0. Any error in the first map logs
+map_server's own ERROR line and exits 255.
+"""
+
+import sys
+import time
+
+import rospy
+from nav_msgs.msg import MapMetaData, OccupancyGrid
+from nav_msgs.srv import GetMap, GetMapResponse, LoadMap, LoadMapResponse
+
+from lab_nav.maps.errors import MapFileError
+from lab_nav.maps.map_loader import DEPRECATED_DEFAULTS, deprecated_description, load_image_map
+from lab_nav.maps.map_yaml import read_map_yaml
+from map_server.command_line import EXIT_SERVER_ERROR, SERVER_DEPRECATED_WARNING, CommandLineExit, parse_server_args
+from map_server.console import error_line
+from map_server.messages import grid_message
+
+VALID_TIME_POLL_S = 0.01   # wall time between looks at the clock while ROS time is still 0
+
+
+def wait_for_valid_time():
+    """The first non-zero ROS time (roscpp's Time::waitForValid); raises ROSInterruptException on shutdown."""
+    while not rospy.is_shutdown():
+        now = rospy.get_rostime()
+        if not now.is_zero():
+            return now
+        rospy.rostime.wallsleep(VALID_TIME_POLL_S)
+    raise rospy.ROSInterruptException("shut down while waiting for ROS time")
+
+
+def _private_param(name, default, kind, what):
+    """A ~param of `kind` (a bool is never a number here), or MapFileError "~NAME must be WHAT, got VALUE"."""
+    value = rospy.get_param("~" + name, default)
+    if isinstance(value, bool) or not isinstance(value, kind):
+        raise MapFileError("~{} must be {}, got {!r}".format(name, what, value))
+    return value
+
+
+class MapServer:
+    """The latched topics and the two services; `load_yaml` and `load_description` publish a new map."""
+
+    def __init__(self, frame_id):
+        self._frame_id = frame_id
+        self._response = GetMapResponse()
+        self._metadata_pub = rospy.Publisher("map_metadata", MapMetaData, queue_size=1, latch=True)
+        self._map_pub = rospy.Publisher("map", OccupancyGrid, queue_size=1, latch=True)
+        rospy.Service("static_map", GetMap, self._static_map)
+        rospy.Service("change_map", LoadMap, self._change_map)
+
+    def load_yaml(self, yaml_path):
+        self.load_description(read_map_yaml(yaml_path))
+
+    def load_description(self, description):
+        rospy.loginfo('Loading map from image "%s"', description.image)
+        grid = load_image_map(description)
+        message = grid_message(grid, self._frame_id, wait_for_valid_time())
+        rospy.loginfo("Read a %d X %d map @ %.3f m/cell", message.info.width, message.info.height,
+                      message.info.resolution)
+        self._response = GetMapResponse(map=message)
+        self._metadata_pub.publish(message.info)
+        self._map_pub.publish(message)
+
+    def _static_map(self, _request):
+        rospy.loginfo("Sending map")
+        return self._response
+
+    def _change_map(self, request):
+        try:
+            self.load_yaml(request.map_url)
+        except MapFileError as error:
+            rospy.logerr(str(error))
+            return LoadMapResponse(result=LoadMapResponse.RESULT_UNDEFINED_FAILURE)
+        rospy.loginfo("Changed map to %s", request.map_url)
+        return LoadMapResponse(map=self._response.map, result=LoadMapResponse.RESULT_SUCCESS)
+
+
+def _first_description(args):
+    if not args.deprecated:
+        return read_map_yaml(args.path)
+    return deprecated_description(
+        args.path, args.resolution, _private_param("negate", DEPRECATED_DEFAULTS["negate"], int, "an integer"),
+        _private_param("occupied_thresh", DEPRECATED_DEFAULTS["occupied_thresh"], (int, float), "a number"),
+        _private_param("free_thresh", DEPRECATED_DEFAULTS["free_thresh"], (int, float), "a number"))
+
+
+def main(argv=None):
+    argv = rospy.myargv(sys.argv if argv is None else argv)
+    try:
+        args = parse_server_args(argv[1:])
+    except CommandLineExit as stop:
+        error_line(stop.error)
+        return stop.code
+    rospy.init_node("map_server_{}".format(time.time_ns()))
+    if len(argv) == 3:
+        rospy.logwarn(SERVER_DEPRECATED_WARNING)
+    try:
+        server = MapServer(_private_param("frame_id", "map", str, "a string"))
+        server.load_description(_first_description(args))
+    except MapFileError as error:
+        rospy.logerr(str(error))
+        return EXIT_SERVER_ERROR
+    except rospy.ROSInterruptException:
+        return 0
+    rospy.spin()
+    return 0
