@@ -83,8 +83,9 @@ class LayeredCostmap:
         self._obstacles = moved
         self.geometry = new
 
-    def add_scan(self, sensor_xy, ends_xy, hit):
-        """Clear along each ray (cut to raytrace_range) and mark the hits within obstacle_range.
+    def add_scan(self, sensor_xy, ends_xy, hit, clear=True):
+        """Clear along each ray (cut to raytrace_range; unless clear is False) and mark the hits within
+        obstacle_range.
 
         ends_xy (N, 2): the finite readings' end points; hit (N,) bool: the reading is an obstacle (not a
         max-range reading). Non-finite readings must be left out by the caller: they neither mark nor clear.
@@ -94,8 +95,9 @@ class LayeredCostmap:
         offsets = ends - origin
         lengths = np.linalg.norm(offsets, axis=1)
         scale = np.minimum(1.0, self.params.raytrace_range / np.maximum(lengths, 1e-9))
-        cols, rows = cells_along(self.geometry, origin, origin + offsets * scale[:, None])
-        self._obstacles[rows, cols] = FREE
+        if clear:
+            cols, rows = cells_along(self.geometry, origin, origin + offsets * scale[:, None])
+            self._obstacles[rows, cols] = FREE
         marking = np.asarray(hit, bool) & (lengths < self.params.obstacle_range)
         cols, rows = self.geometry.world_to_cell(ends[marking, 0], ends[marking, 1])
         inside = self.geometry.contains(cols, rows)

@@ -63,9 +63,9 @@ def select_beams(ranges, angles, params, range_max):
     return ranges[ok], angles[ok]
 
 
-def weights(field, poses, laser_pose, ranges, angles, params):
+def weights(field, poses, laser_pose, ranges, angles, params, max_range):
     """(N,) weight factors of particles `poses` (N, 3) for the selected beams; laser_pose (x, y, yaw) is the
-    laser in the base frame."""
+    laser in the base frame, max_range (m) the range z_rand is spread over."""
     lx, ly, lyaw = laser_pose
     c, s = np.cos(poses[:, 2]), np.sin(poses[:, 2])
     sx = poses[:, 0] + c * lx - s * ly
@@ -74,6 +74,5 @@ def weights(field, poses, laser_pose, ranges, angles, params):
     ex = sx[:, None] + ranges[None, :] * np.cos(beam)
     ey = sy[:, None] + ranges[None, :] * np.sin(beam)
     z = field.distance_at(ex, ey)
-    max_range = params.max_range
     pz = params.z_hit * np.exp(-(z * z) / (2.0 * params.sigma_hit ** 2)) + params.z_rand / max_range
     return 1.0 + np.sum(pz ** 3, axis=1)

@@ -122,10 +122,12 @@ class ParticleFilter:
                                                  self.params.noise, self.rng)
         self._last_update_odom = tuple(odom_pose)
         self._force_update = False
-        r, a = likelihood_field.select_beams(ranges, angles, self.params.laser, range_max)
+        laser = self.params.laser
+        r, a = likelihood_field.select_beams(ranges, angles, laser, range_max)
         if r.size:
-            w = self.weights * likelihood_field.weights(self.field, self.particles, laser_pose, r, a,
-                                                        self.params.laser)
+            max_range = laser.max_range if laser.max_range > 0 else range_max
+            w = self.weights * likelihood_field.weights(self.field, self.particles, laser_pose, r, a, laser,
+                                                        max_range)
             self.weights = w / w.sum()
         self._updates += 1
         if self._updates % max(self.params.resample_interval, 1) == 0:

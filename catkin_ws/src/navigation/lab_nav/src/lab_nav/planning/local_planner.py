@@ -30,7 +30,9 @@ import numpy as np
 from ..angles import normalize
 from ..costmap.values import INSCRIBED, LETHAL
 
-FOOTPRINT_OUTLINE_STEP_M = 0.05
+FOOTPRINT_OUTLINE_STEP_M = 0.1
+"""Spacing of the footprint outline points checked against the costmap: cells are 0.05 m, walls in the costmap
+are at least a cell thick and inflated, so every 0.1 m finds a lethal cell the outline crosses."""
 
 
 @dataclass(frozen=True)
@@ -57,7 +59,7 @@ class DwaParams:
     forward_point_distance: float = 0.325
     trans_stopped_vel: float = 0.1
     theta_stopped_vel: float = 0.1
-    sim_steps: int = 20
+    sim_steps: int = 12
 
     @property
     def sim_period(self):
