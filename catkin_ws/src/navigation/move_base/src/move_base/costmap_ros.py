@@ -56,6 +56,7 @@ class CostmapRos:
         self._scans = []
         self._published = None
         self._pose = None
+        self._dirty = True
         p = config.params
         if config.static_map:
             geometry = MapGeometry(config.resolution, 1, 1, 0.0, 0.0)
@@ -110,6 +111,7 @@ class CostmapRos:
                 rospy.loginfo("Resizing costmap to %d X %d at %f m/pix", geometry.width, geometry.height,
                               geometry.resolution)
             self.costmap.set_map(geometry, cells)
+            self._dirty = True
         rospy.loginfo("Received a %d X %d map at %f m/pix", geometry.width, geometry.height, geometry.resolution)
         self._map_received.set()
 
@@ -144,9 +146,15 @@ class CostmapRos:
             return None
 
     def update(self):
+        """Apply the scans that came since the last update and recompute the grid; nothing to do (no scan, the
+        robot in the same cell) costs one TF lookup."""
         pose = self.robot_pose()
         with self.lock:
             scans, self._scans = self._scans, []
+            if not scans and pose is not None and self._pose is not None and self._same_cell(pose, self._pose) \
+                    and not self._dirty:
+                return
+            self._dirty = False
             if pose is not None:
                 self._pose = pose
                 if self.config.rolling_window:
@@ -161,6 +169,10 @@ class CostmapRos:
             self.costmap.update()
         if pose is not None:
             self._publish_footprint(pose)
+
+    def _same_cell(self, a, b):
+        g = self.costmap.geometry
+        return g.world_to_cell(a[0], a[1]) == g.world_to_cell(b[0], b[1]) and abs(a[2] - b[2]) < 0.05
 
     def reset(self):
         with self.lock:

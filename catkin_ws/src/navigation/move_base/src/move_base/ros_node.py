@@ -152,6 +152,14 @@ class MoveBaseNode:
         return True
 
     def execute(self, goal):
+        """The action server's goal thread; a topic closed by shutdown ends it quietly."""
+        try:
+            self._execute(goal)
+        except rospy.ROSException:
+            if not rospy.is_shutdown():
+                raise
+
+    def _execute(self, goal):
         if not self._accept(goal):
             return
         rate = rospy.Rate(self.params.controller_frequency)
