@@ -1,0 +1,170 @@
+"""A layered costmap as move_base's global and local costmaps build it without a `plugins` list.
+
+Layers, by name: `static_layer` (the map: -1 -> 255, 100 -> 254, else 0; global costmap only), `obstacle_layer`
+(laser hits within obstacle_range marked 254, cells along each ray up to raytrace_range cleared to 0, the robot's
+footprint cleared; its untouched cells are 0, as track_unknown_space false makes them) and `inflation_layer`.
+The master grid is the static layer, then the obstacle layer by maximum (which also overwrites 255 with the
+obstacle layer's 0: the published turtlebot3 costmaps have no unknown cells), then inflation around every 254
+cell. A rolling window (the local costmap) keeps its obstacle marks in place in the world when it moves.
+
+Grids are (height, width) uint8 arrays indexed [row, col]; positions are metres in the costmap's global frame.
+"""
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..maps.geometry import MapGeometry
+from . import inflation as inflation_layer
+from .footprint import Footprint
+from .inflation import Inflation
+from .raytrace import cells_along
+from .values import FREE, LETHAL, NO_INFORMATION, from_map
+
+STATIC_LAYER = "static_layer"
+OBSTACLE_LAYER = "obstacle_layer"
+INFLATION_LAYER = "inflation_layer"
+
+
+@dataclass(frozen=True)
+class CostmapParams:
+    """The costmap_common_params keys that shape the grid (turtlebot3 waffle values as defaults)."""
+
+    footprint: Footprint
+    inflation_radius: float = 1.0
+    cost_scaling_factor: float = 3.0
+    obstacle_range: float = 3.0
+    raytrace_range: float = 3.5
+
+    @property
+    def inflation(self):
+        return Inflation(self.footprint.inscribed_radius, self.inflation_radius, self.cost_scaling_factor)
+
+
+class LayeredCostmap:
+    """The master grid of one costmap and its layers. `layers` names them, in order."""
+
+    def __init__(self, geometry, params, static=True):
+        self.params = params
+        self.geometry = geometry
+        self.layers = ((STATIC_LAYER,) if static else ()) + (OBSTACLE_LAYER, INFLATION_LAYER)
+        self._static = None
+        self._obstacles = np.zeros((geometry.height, geometry.width), dtype=np.uint8)
+        self.costs = np.zeros_like(self._obstacles)
+
+    # --- layer inputs -------------------------------------------------------------------------------------
+    def set_map(self, geometry, occupancy):
+        """Give the static layer a map (int8 data, row-major); a map of another geometry resizes the costmap."""
+        if STATIC_LAYER not in self.layers:
+            raise ValueError("this costmap has no static layer")
+        data = np.asarray(occupancy).reshape(geometry.height, geometry.width)
+        if geometry != self.geometry:
+            self.geometry = geometry
+            self._obstacles = np.zeros((geometry.height, geometry.width), dtype=np.uint8)
+        self._static = from_map(data)
+
+    def move_to(self, x, y):
+        """Centre a rolling window on (x, y): the origin snaps to whole cells; marks keep their world place."""
+        g = self.geometry
+        col = int(np.floor(x / g.resolution)) - g.width // 2
+        row = int(np.floor(y / g.resolution)) - g.height // 2
+        new = MapGeometry(g.resolution, g.width, g.height, col * g.resolution, row * g.resolution)
+        if new == g:
+            return
+        shift_c = int(round((new.origin_x - g.origin_x) / g.resolution))
+        shift_r = int(round((new.origin_y - g.origin_y) / g.resolution))
+        moved = np.zeros_like(self._obstacles)
+        h, w = moved.shape
+        src_r = slice(max(shift_r, 0), min(h + shift_r, h))
+        src_c = slice(max(shift_c, 0), min(w + shift_c, w))
+        dst_r = slice(max(-shift_r, 0), max(-shift_r, 0) + (src_r.stop - src_r.start))
+        dst_c = slice(max(-shift_c, 0), max(-shift_c, 0) + (src_c.stop - src_c.start))
+        if src_r.stop > src_r.start and src_c.stop > src_c.start:
+            moved[dst_r, dst_c] = self._obstacles[src_r, src_c]
+        self._obstacles = moved
+        self.geometry = new
+
+    def add_scan(self, sensor_xy, ends_xy, hit, clear=True):
+        """Clear along each ray (cut to raytrace_range; unless clear is False) and mark the hits within
+        obstacle_range.
+
+        ends_xy (N, 2): the finite readings' end points; hit (N,) bool: the reading is an obstacle (not a
+        max-range reading). Non-finite readings must be left out by the caller: they neither mark nor clear.
+        """
+        ends = np.asarray(ends_xy, dtype=float).reshape(-1, 2)
+        origin = np.asarray(sensor_xy, dtype=float)
+        offsets = ends - origin
+        lengths = np.linalg.norm(offsets, axis=1)
+        scale = np.minimum(1.0, self.params.raytrace_range / np.maximum(lengths, 1e-9))
+        if clear:
+            cols, rows = cells_along(self.geometry, origin, origin + offsets * scale[:, None])
+            self._obstacles[rows, cols] = FREE
+        marking = np.asarray(hit, bool) & (lengths < self.params.obstacle_range)
+        cols, rows = self.geometry.world_to_cell(ends[marking, 0], ends[marking, 1])
+        inside = self.geometry.contains(cols, rows)
+        self._obstacles[rows[inside], cols[inside]] = LETHAL
+
+    def clear_footprint(self, x, y, yaw):
+        """Free the obstacle layer's cells whose centres lie inside the footprint at (x, y, yaw)."""
+        cols, rows = self.cells_inside(self.params.footprint.placed(x, y, yaw))
+        self._obstacles[rows, cols] = FREE
+
+    def cells_inside(self, polygon):
+        """(cols, rows) of the in-grid cells whose centres lie inside a convex polygon (K, 2) in m."""
+        g = self.geometry
+        lo_c, lo_r = g.world_to_cell(*polygon.min(axis=0))
+        hi_c, hi_r = g.world_to_cell(*polygon.max(axis=0))
+        cc, rr = np.meshgrid(np.arange(max(lo_c, 0), min(hi_c, g.width - 1) + 1),
+                             np.arange(max(lo_r, 0), min(hi_r, g.height - 1) + 1))
+        cc, rr = cc.ravel(), rr.ravel()
+        px, py = g.cell_center(cc, rr)
+        edges = np.roll(polygon, -1, axis=0) - polygon
+        cross = edges[:, 0, None] * (py - polygon[:, 1, None]) - edges[:, 1, None] * (px - polygon[:, 0, None])
+        inside = np.all(cross >= 0, axis=0) | np.all(cross <= 0, axis=0)
+        return cc[inside], rr[inside]
+
+    def reset(self):
+        """Erase every obstacle mark (clear_costmaps); the static layer keeps its map."""
+        self._obstacles[:] = FREE
+
+    def clear_outside(self, x, y, size, layer_names):
+        """clear_costmap_recovery: reset the named layers' cells outside a size x size m square centred on
+        (x, y). Only the obstacle layer can be cleared; any other name, e.g. the recovery default `obstacles`,
+        clears nothing (so with turtlebot3's layer names the recoveries clear nothing, as in the original)."""
+        if OBSTACLE_LAYER not in layer_names:
+            return
+        g = self.geometry
+        px, py = g.cell_center(np.arange(g.width), np.arange(g.height))
+        keep = (np.abs(py - y)[:, None] <= size / 2) & (np.abs(px - x)[None, :] <= size / 2)
+        self._obstacles[~keep] = FREE
+
+    # --- the master grid ----------------------------------------------------------------------------------
+    def update(self):
+        """Recompute the master grid from the layers; returns it."""
+        if self._static is not None:
+            master = self._static.copy()
+            unknown = master == NO_INFORMATION
+            master = np.maximum(master, self._obstacles)
+            master[unknown] = self._obstacles[unknown]
+        else:
+            master = self._obstacles.copy()
+        inflated = self.params.inflation.costs(master == LETHAL, self.geometry.resolution)
+        self.costs = inflation_layer.apply(master, inflated)
+        return self.costs
+
+    def cost_at(self, x, y):
+        """Master cost (int array) at world points; NO_INFORMATION outside the grid."""
+        cols, rows = self.geometry.world_to_cell(x, y)
+        inside = self.geometry.contains(cols, rows)
+        out = np.full(np.shape(cols), NO_INFORMATION, dtype=np.int32)
+        out[inside] = self.costs[rows[inside], cols[inside]]
+        return out
+
+
+def changed_box(old, new):
+    """(col, row, width, height) of the smallest box holding every cell that differs, or None when none does."""
+    if old is None or old.shape != new.shape:
+        return (0, 0, new.shape[1], new.shape[0])
+    rows, cols = np.nonzero(old != new)
+    if rows.size == 0:
+        return None
+    return (int(cols.min()), int(rows.min()), int(cols.max() - cols.min() + 1), int(rows.max() - rows.min() + 1))

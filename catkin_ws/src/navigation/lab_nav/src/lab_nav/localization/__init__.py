@@ -1,0 +1,1 @@
+"""amcl's particle filter: likelihood-field laser model, diff-drive odometry model, KLD resampling."""

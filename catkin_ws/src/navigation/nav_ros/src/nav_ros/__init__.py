@@ -1,0 +1,1 @@
+"""ROS message conversions and map fetching shared by the navigation nodes."""

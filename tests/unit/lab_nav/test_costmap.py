@@ -1,0 +1,111 @@
+"""Costmap layers: cell values, inflation against its formula, marking and clearing by ray tracing."""
+import numpy as np
+import pytest
+
+from lab_nav.costmap.footprint import BURGER_FOOTPRINT, WAFFLE_FOOTPRINT, Footprint, FootprintError
+from lab_nav.costmap.inflation import Inflation
+from lab_nav.costmap.layered import CostmapParams, LayeredCostmap, changed_box
+from lab_nav.costmap.values import INSCRIBED, LETHAL, NO_INFORMATION, from_map, to_occupancy
+from lab_nav.maps.geometry import MapGeometry
+
+WAFFLE = Footprint.padded(WAFFLE_FOOTPRINT)
+PARAMS = CostmapParams(WAFFLE)
+
+
+def test_padded_footprints_give_turtlebot3s_radii():
+    assert WAFFLE.inscribed_radius == pytest.approx(0.087)
+    assert WAFFLE.circumscribed_radius == pytest.approx(0.271, abs=5e-4)
+    burger = Footprint.padded(BURGER_FOOTPRINT)
+    assert (burger.inscribed_radius, burger.circumscribed_radius) == pytest.approx((0.051, 0.163), abs=5e-4)
+
+
+def test_a_footprint_needs_three_points():
+    with pytest.raises(FootprintError, match="at least three"):
+        Footprint.padded([[0, 0], [1, 1]])
+
+
+def test_published_values_translate_as_costmap_2d_does():
+    assert list(to_occupancy([0, 1, 252, 253, 254, 255])) == [0, 1, 98, 99, 100, -1]
+    assert list(from_map([-1, 0, 50, 99, 100])) == [NO_INFORMATION, 0, 0, 0, LETHAL]
+
+
+@pytest.mark.parametrize("cells", [2, 3, 5, 10, 20])
+def test_inflation_follows_the_formula(cells):
+    lethal = np.zeros((50, 50), bool)
+    lethal[25, 5] = True
+    costs = Inflation(0.087).costs(lethal, 0.05)
+    d = cells * 0.05
+    assert costs[25, 5 + cells] == int(np.floor(252 * np.exp(-3.0 * (d - 0.087))))
+    assert costs[25, 5] == LETHAL and costs[25, 6] == INSCRIBED
+    assert costs[25, 5 + 21] == 0   # beyond inflation_radius 1.0 m
+
+
+def _world_map():
+    """A 4 x 4 m map at 0.05 m with a wall at x = 1 m, unknown beyond x = 1.5 m."""
+    geometry = MapGeometry(0.05, 80, 80, -2.0, -2.0)
+    data = np.zeros((80, 80), np.int8)
+    data[:, 60] = 100
+    data[:, 70:] = -1
+    return geometry, data
+
+
+def test_the_global_costmap_has_no_unknown_cells_and_inflates_walls():
+    costmap = LayeredCostmap(*_world_map()[:1], PARAMS)
+    costmap.set_map(*_world_map())
+    costs = costmap.update()
+    assert not np.any(costs == NO_INFORMATION)
+    assert costs[40, 60] == LETHAL and costs[40, 59] == INSCRIBED and 0 < costs[40, 55] < INSCRIBED
+
+
+def test_a_scan_marks_hits_and_clears_along_its_rays():
+    geometry, data = _world_map()
+    costmap = LayeredCostmap(geometry, PARAMS)
+    costmap.set_map(geometry, data)
+    costmap.add_scan((0.0, 0.0), [(0.5, 0.0)], [True])
+    assert costmap.update()[40, 50] == LETHAL
+    costmap.add_scan((0.0, 0.0), [(0.81, 0.0)], [True])   # the box moved away: its cell is cleared
+    costs = costmap.update()
+    assert costs[40, 50] < INSCRIBED and costs[40, 56] == LETHAL
+    costmap.add_scan((0.0, 0.0), [(0.0, 1.2)], [False])  # a max-range reading clears but does not mark
+    assert costmap.update()[64, 40] != LETHAL
+
+
+def test_hits_beyond_obstacle_range_do_not_mark():
+    geometry = MapGeometry(0.05, 200, 200, -5.0, -5.0)
+    costmap = LayeredCostmap(geometry, PARAMS, static=False)
+    costmap.add_scan((0.0, 0.0), [(3.2, 0.0), (2.9, 0.0)], [True, True])
+    costs = costmap.update()
+    assert costs[100, 164] != LETHAL and costs[100, 158] == LETHAL
+
+
+def test_a_rolling_window_keeps_marks_in_place_in_the_world():
+    costmap = LayeredCostmap(MapGeometry(0.05, 60, 60, -1.5, -1.5), PARAMS, static=False)
+    costmap.add_scan((0.0, 0.0), [(1.0, 0.0)], [True])
+    costmap.update()
+    assert costmap.cost_at(1.0, 0.0) == LETHAL
+    costmap.move_to(0.5, 0.0)
+    costmap.update()
+    assert costmap.geometry.origin_x == pytest.approx(-1.0)
+    assert costmap.cost_at(1.0, 0.0) == LETHAL
+
+
+def test_reset_and_footprint_clearing_erase_marks_but_not_the_map():
+    geometry, data = _world_map()
+    costmap = LayeredCostmap(geometry, PARAMS)
+    costmap.set_map(geometry, data)
+    costmap.add_scan((0.0, 0.0), [(0.5, 0.0), (-0.5, 0.0)], [True, True])
+    costmap.clear_footprint(0.5, 0.0, 0.0)
+    assert costmap.update()[40, 50] != LETHAL and costmap.costs[40, 30] == LETHAL
+    costmap.clear_outside(0.0, 0.0, 3.0, ["obstacles"])   # turtlebot3's layer is obstacle_layer: nothing
+    assert costmap.update()[40, 30] == LETHAL
+    costmap.reset()
+    assert costmap.update()[40, 30] != LETHAL and costmap.costs[40, 60] == LETHAL
+
+
+def test_changed_box_bounds_the_differences():
+    a = np.zeros((10, 10), np.uint8)
+    b = a.copy()
+    assert changed_box(a, b) is None
+    b[2, 3] = b[5, 7] = 9
+    assert changed_box(a, b) == (3, 2, 5, 4)
+    assert changed_box(None, b) == (0, 0, 10, 10)
