@@ -15,6 +15,7 @@ from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
 
 from master_reconnect import keep_registered
+from sim_clock import warn_if_clock_missing
 from tb3_client.commands import CommandPublisher
 from tb3_client.scan_ahead import closest_ahead
 
@@ -59,7 +60,8 @@ class RobotLost(RobotError):
 class Robot:
     """Velocity commands and the latest odometry and LiDAR sweep, each with its wall-clock arrival time.
 
-    Creating it also keeps the node registered across a roscore restart (master_reconnect)."""
+    Creating it also keeps the node registered across a roscore restart (master_reconnect) and warns once when
+    /use_sim_time is true and no /clock comes (sim_clock)."""
 
     def __init__(self):
         self._cmd_vel = CommandPublisher("cmd_vel", queue_size=1)
@@ -76,6 +78,7 @@ class Robot:
         rospy.Subscriber("scan", LaserScan, self._on_scan, queue_size=1)
         rospy.on_shutdown(self._cmd_vel.stop_for_good)
         keep_registered()
+        warn_if_clock_missing()
 
     def _on_odom(self, msg):
         with self._changed:

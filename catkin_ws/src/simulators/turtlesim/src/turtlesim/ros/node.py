@@ -22,8 +22,9 @@ original's graph:
 Console lines are in roscpp's format (`[ INFO] [secs.nanosecs]: ...`, see ros/console.py).
 
 Timing: every TICK_INTERVAL_MS of wall-clock time the core steps by its fixed DT; /use_sim_time
-plays no part (the original's QTimer). Callbacks run on rospy's threads but hold one lock, so
-each runs entirely before or after a tick, never during one (the original's spinOnce order).
+plays no part (the original's QTimer); when it is true and no /clock comes, the node says so once (sim_clock),
+as the nodes that drive the turtle on rospy time would wait for ever. Callbacks run on rospy's threads but hold
+one lock, so each runs entirely before or after a tick, never during one (the original's spinOnce order).
 Failures reach clients as roscpp's do: `responded with an error: b''` for the original's
 `return false`, the exception text for roscpp's InvalidNameException.
 """
@@ -36,6 +37,7 @@ import rospy
 from std_srvs.srv import Empty, EmptyResponse
 
 from master_reconnect import keep_registered
+from sim_clock import warn_if_clock_missing
 from stop_request import StopRequest
 from stop_request.closed_topic import shutting_down
 from turtlesim.core.constants import BACKGROUND_PARAMS, DEFAULT_BACKGROUND, TICK_INTERVAL_MS
@@ -304,6 +306,7 @@ def main():
     with_window = window_wanted(headless)
     node = TurtleSimNode(stop, snapshot_service, publish_canvas=publish_canvas)
     keep_registered()
+    warn_if_clock_missing()
     try:
         if with_window:
             run_window(node.tick, node.next_frame, rospy.myargv()[:1])
