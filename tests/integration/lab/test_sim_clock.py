@@ -70,3 +70,17 @@ def test_no_warning_while_the_clock_runs(ros_master, master_api):
     node.stop()
     sim.stop()
     assert "no /clock has arrived" not in node.output(), node.output()
+
+
+def test_a_server_started_before_the_simulator_logs_sim_time(ros_master, master_api):
+    """The Week 4 servers wait for the first /clock before their 'ready' line: started beside the simulator (here
+    even before it), the line carries the simulator's time, not 0.000000."""
+    master_api.setParam(PARAM, True)
+    server = ros_master.rosrun("week4_services", "move_server.py")
+    sim = ros_master.rosrun("tb3_sim", "tb3_sim_node", "_real_time_factor:=5", "_headless:=true", "__name:=gazebo")
+    wait_until(lambda: "service is ready to be called" in server.output(), 60, "the server's ready line")
+    ready = next(line for line in server.output().splitlines() if "service is ready to be called" in line)
+    server.stop()
+    sim.stop()
+    assert ", 0.000000]" not in ready, ready
+    assert "no /clock has arrived" not in server.output(), server.output()
