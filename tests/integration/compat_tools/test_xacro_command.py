@@ -1,6 +1,7 @@
 """The `xacro` command as ROS 1 users call it (`rosrun xacro xacro ...`, `$(find xacro)/xacro ...`): the PyPI
 xacro release behind it, `$(find pkg)` through rospack, the deprecated --inorder accepted, `name:=value` arguments,
 the lab's venv found whatever python3 comes first on PATH, and one-line errors with a non-zero exit status."""
+import os
 import subprocess
 from pathlib import Path
 
@@ -108,3 +109,20 @@ def test_no_input_prints_usage():
     result = run(["rosrun", "xacro", "xacro"])
     assert result.returncode != 0
     assert "usage: xacro" in result.stderr.lower() and "Traceback" not in result.stderr
+
+
+@pytest.mark.parametrize("package, launch_file", [
+    ("turtlebot3_gazebo", "turtlebot3_empty_world.launch"),
+    ("turtlebot3_gazebo", "multi_turtlebot3.launch"),
+    ("turtlebot3_bringup", "turtlebot3_remote.launch"),
+    ("turtlebot3_description", "turtlebot3_model.launch"),
+])
+def test_the_labs_launch_files_print_no_inorder_notice(package, launch_file):
+    """xacro prints "in-order processing became default in ROS Melodic" for --inorder, as ROS 1's does; the lab's own
+    launch files leave the option out, so a first launch shows only lines that mean something. roslaunch runs the
+    robot_description commands while it reads the files (--dump-params: no master needed)."""
+    env = dict(os.environ, ROS_MASTER_URI="http://localhost:1")   # nothing listens: parameters are only read
+    result = run(["roslaunch", "--dump-params", package, launch_file], env=env)
+    assert result.returncode == 0, result.stderr
+    assert "robot_description" in result.stdout
+    assert "in-order" not in result.stdout + result.stderr, result.stderr

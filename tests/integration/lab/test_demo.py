@@ -2,6 +2,7 @@
 writes a top-down PNG showing the trajectory, and exits 0 leaving nothing running."""
 import os
 import re
+import signal
 import subprocess
 from pathlib import Path
 
@@ -9,6 +10,7 @@ import pytest
 from PyQt5.QtGui import QImage
 
 from roslab import free_port
+from roslab.http_check import http_status
 
 REPO_ROOT = Path(__file__).resolve().parents[3]
 PICTURE = REPO_ROOT / "demo-output" / "week4_demo.png"
@@ -82,3 +84,29 @@ def test_demo_leaves_no_process_behind(demo_run):
     """No process of the demo's (they all carry its private ROS_MASTER_URI) outlives it; other test modules' ROS
     processes, running in parallel, are not the demo's."""
     assert processes_using(demo_run.master_uri) == []
+
+
+def test_demo_web_prints_the_address_while_it_runs(tmp_path):
+    """`scripts/demo --web` prints the browser view's address as soon as the page is up, before the tour's table:
+    the node's output reaches the log line by line (it used to arrive in one block at shutdown, and the address
+    was never shown). The printed address serves the page; Ctrl-C then ends everything."""
+    env = dict(os.environ, ROS_MASTER_URI="http://localhost:{}".format(free_port()), ROS_HOSTNAME="localhost",
+               ROS_HOME=str(tmp_path), ROS_LOG_DIR=str(tmp_path / "log"))
+    env.pop("DISPLAY", None)
+    web_port = free_port()
+    demo = subprocess.Popen([str(REPO_ROOT / "scripts" / "demo"), "--web", "--web-port", str(web_port)], env=env,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True)
+    seen = []
+    try:
+        for line in demo.stdout:
+            seen.append(line)
+            if "the browser view:" in line or "measured from /odom" in line:
+                break
+        address = re.search(r"the browser view: open (http://\S+) in a browser", "".join(seen))
+        assert address, "".join(seen)
+        assert address.group(1) == "http://localhost:{}/".format(web_port)
+        assert http_status(address.group(1), timeout_s=10.0) == 200
+    finally:
+        os.killpg(demo.pid, signal.SIGINT)
+        demo.communicate(timeout=60)
+    assert processes_using(env["ROS_MASTER_URI"]) == []

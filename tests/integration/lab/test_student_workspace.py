@@ -223,3 +223,18 @@ def test_a_workspace_built_without_the_lab_underneath_is_left_out(tmp_path):
     in_bash("cd ~/catkin_ws && rm -r build devel && catkin_make", tmp_path)   # the advice, in a ROS terminal
     output = in_bash('echo "$ROS_PACKAGE_PATH"', tmp_path)
     assert output.strip() == "{}:{}".format(workspace / "src", REPO_ROOT / "catkin_ws/src")
+
+
+def test_a_terminal_opened_before_the_first_build_finds_the_students_package_at_once(tmp_path):
+    """The Week 4 same-name trap: the page's TERMINAL 3, opened before the first `catkin build` (here: before the
+    package exists, after a rospack call that filled rospack's cache), `roscd week4_services` and writes the new file
+    there. The student's unbuilt workspace is first on the package path and rospack does not trust its cache, so the
+    file lands in the student's package, never in the lab's."""
+    lab_package = REPO_ROOT / "catkin_ws/src/exercises/week4_services"
+    student_package = tmp_path / "catkin_ws/src/week4_services"
+    output = in_bash("rospack find week4_services && cd ~/catkin_ws/src && catkin_create_pkg week4_services rospy "
+                     ">/dev/null && roscd week4_services && touch src/new_server.py && pwd && "
+                     "rospack find week4_services", tmp_path)
+    assert output.split()[-3:] == [str(lab_package), str(student_package), str(student_package)], output
+    assert (student_package / "src/new_server.py").exists()
+    assert not (lab_package / "src/new_server.py").exists()

@@ -385,6 +385,25 @@ def test_snapshot_writes_a_png_with_the_trail(ros_master, fresh, probe, tmp_path
     assert pixel(2.0, 2.0) != (255, 0, 0), "the turtle sprite is drawn over the trail's end"
 
 
+def test_teleport_then_clear_at_once_leaves_a_clean_canvas(ros_master, fresh, probe, tmp_path):
+    """One script calls teleport_absolute with the pen down, then /clear at once: the original answers service calls
+    at the start of its next update, after the teleport has been drawn, so the clear removes the line. Three
+    rounds, each pair of calls a few milliseconds apart."""
+    set_pen = rospy.ServiceProxy("/turtle1/set_pen", SetPen)
+    teleport = rospy.ServiceProxy("/turtle1/teleport_absolute", TeleportAbsolute)
+    clear = rospy.ServiceProxy("/clear", Empty)
+    set_pen(255, 0, 0, 5, 0)
+    path = tmp_path / "view.png"
+    master_api(ros_master).setParam("/turtlesim/snapshot_path", str(path))
+    for x, y in ((1.0, 1.0), (CENTRE, CENTRE), (1.0, 1.0)):
+        teleport(x, y, 0.0)
+        clear()
+        next_pose(probe, lambda p: (p["x"], p["y"]) == (x, y))
+        call("/turtlesim/snapshot", Empty)
+        _, pixel = read_png(path)
+        assert pixel(3.0, 3.0) == BACKGROUND, "the teleport's line to ({}, {}) survived the clear".format(x, y)
+
+
 def test_snapshot_default_path_is_in_ros_home(ros_master, fresh, probe):
     master_api(ros_master).deleteParam("/turtlesim/snapshot_path")
     call("/turtlesim/snapshot", Empty)

@@ -88,7 +88,10 @@ def test_the_window_is_titled_turtlesim_and_500_square(window_sim):
     assert windows["TurtleSim"] == (500, 500)
 
 
+@pytest.mark.realtime   # a wall-clock rate: 55.1 Hz beside the parallel part of the suite, where Xvfb and Qt wait
 def test_pose_rate_with_the_window(window_sim, probe):
+    """62.5 Hz of wall time (the original's 16 ms QTimer) with the window drawing: measured in the realtime part
+    of scripts/test, where the node's timer gets the CPU on time, and with the headless test's bound."""
     arrivals = [entry["wall"] for entry in probe.collect(POSE, 3.0)]
     rate = (len(arrivals) - 1) / (arrivals[-1] - arrivals[0])
     assert 60.5 <= rate <= 64.5

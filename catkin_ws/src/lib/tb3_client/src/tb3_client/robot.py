@@ -15,6 +15,7 @@ from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
 
 from master_reconnect import keep_registered
+from sim_clock import wait_for_clock
 from tb3_client.commands import CommandPublisher
 from tb3_client.scan_ahead import closest_ahead
 
@@ -59,7 +60,9 @@ class RobotLost(RobotError):
 class Robot:
     """Velocity commands and the latest odometry and LiDAR sweep, each with its wall-clock arrival time.
 
-    Creating it also keeps the node registered across a roscore restart (master_reconnect)."""
+    Creating it also keeps the node registered across a roscore restart (master_reconnect) and, under
+    /use_sim_time, waits for the simulator's first /clock (up to 15 s, warning after 5 s; sim_clock), so the server's
+    "ready" line carries sim time rather than 0.000000."""
 
     def __init__(self):
         self._cmd_vel = CommandPublisher("cmd_vel", queue_size=1)
@@ -76,6 +79,7 @@ class Robot:
         rospy.Subscriber("scan", LaserScan, self._on_scan, queue_size=1)
         rospy.on_shutdown(self._cmd_vel.stop_for_good)
         keep_registered()
+        wait_for_clock()
 
     def _on_odom(self, msg):
         with self._changed:

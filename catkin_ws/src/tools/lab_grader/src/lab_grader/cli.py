@@ -1,16 +1,18 @@
-"""`rosrun lab_grader grade`: grade a class (or one submission, or one shard of a class) against a suite.
+"""`sudo -E rosrun lab_grader grade`: grade a class (or one submission, or one shard of a class) against a suite.
 
-    rosrun lab_grader grade submissions/ --suite week4 --out grades/              every student, 2 at a time
-    rosrun lab_grader grade alice.zip --suite week4 --out grades/                 one submission
-    rosrun lab_grader grade submissions/ --suite week4 --out grades/2 --shard 2/4     a job array's piece
-    rosrun lab_grader grade --merge grades/1 grades/2 grades/3 grades/4 --out grades/   the class files
+    sudo -E rosrun lab_grader grade submissions/ --suite week4 --out grades/        every student, 2 at a time
+    sudo -E rosrun lab_grader grade alice.zip --suite week4 --out grades/           one submission
+    sudo -E rosrun lab_grader grade submissions/ --suite week4 --out grades/2 --shard 2/4   a job array's piece
+    sudo -E rosrun lab_grader grade --merge grades/1 grades/2 grades/3 --out grades/   the class files
 
-It must run as root (it makes a network namespace and a sandbox user per worker). Exit 0 when every submission
-was graded (whatever the scores), 2 for bad arguments (a path that does not exist among them, told in one line)
-or submissions that could not be read.
+It must run as root (it makes a network namespace and a sandbox user per worker): `sudo -E rosrun lab_grader grade
+...` in a ROS terminal, the one form the README uses everywhere. Exit 0 when every submission was graded (whatever
+the scores), 2 for bad arguments (a path that does not exist among them, told in one line) or submissions that
+could not be read.
 """
 import argparse
 import os
+import shlex
 import shutil
 import sys
 import tempfile
@@ -22,13 +24,19 @@ from lab_grader.batch import Progress, grade_all, parse_shard
 from lab_grader.class_report import read_results, write_class_report
 from lab_grader.grade import SubmissionGrader
 from lab_grader.sandbox import reserve_slot
-from lab_grader.submissions import find_submissions
+from lab_grader.submissions import SubmissionError, find_submissions
 from lab_grader.suite_file import SuiteError, load_suite
 
 
 def lab_root() -> Path:
     """The lab checkout: lab_grader lives in <lab>/catkin_ws/src/tools/lab_grader."""
     return Path(rospkg.RosPack().get_path("lab_grader")).resolve().parents[3]
+
+
+def command_as_root(argv):
+    """The command that grades `argv` as root: `sudo -E` keeps the ROS variables rosrun needs to find the grader
+    (plain sudo drops them: "package 'lab_grader' not found"), and the grader restores the rest (nodes/grade)."""
+    return " ".join(["sudo -E rosrun lab_grader grade", *(shlex.quote(arg) for arg in argv)])
 
 
 def parse_args(argv):
@@ -64,8 +72,8 @@ def main(argv=None):
         print("grade: merged {} students into {}".format(len(results), args.out))
         return 0
     if os.geteuid() != 0:
-        print("grade: must run as root (each submission gets its own network namespace and sandbox user)",
-              file=sys.stderr)
+        print("grade: must run as root (each submission gets its own network namespace and sandbox user); type:\n"
+              "    {}".format(command_as_root(sys.argv[1:] if argv is None else argv)), file=sys.stderr)
         return 2
     try:
         suite = load_suite(args.suite)
@@ -79,6 +87,9 @@ def main(argv=None):
     os.chmod(work_root, 0o711)   # the sandbox users must reach their own workspace inside
     try:
         return grade_class(args, suite, shard, work_root)
+    except SubmissionError as error:   # a submission named on the command line that cannot be read
+        print("grade: {}".format(error), file=sys.stderr)
+        return 2
     finally:
         shutil.rmtree(work_root, ignore_errors=True)   # unpacked submissions and empty box folders
 

@@ -45,9 +45,10 @@ def main():
     keep_registered()
     if policy.warning():
         rospy.logwarn(policy.warning())
-    rospy.loginfo("lab_web: open %s in a browser", policy.url(port))
     try:
-        web.run_app(make_app(bridge, policy, static_dir()), host=policy.host, port=port, print=None,
+        # aiohttp's start-up line, printed once the port is bound: the address appears when the page is up.
+        web.run_app(make_app(bridge, policy, static_dir()), host=policy.host, port=port,
+                    print=lambda _started: rospy.loginfo("lab_web: open %s in a browser", policy.url(port)),
                     access_log=None, handle_signals=True)
     except OSError as error:
         rospy.logfatal("lab_web: cannot listen on %s:%s (%s): another program uses the port? Choose another with "

@@ -32,7 +32,9 @@ Parameters: see tb3_sim.ros.config (~world, ~spawn_robot, ~model, ~x_pos, ~y_pos
   ~publish_static_tf, ~camera_width, ~camera_height, ~camera_rate).
 /use_sim_time is set to true before the node starts if it is absent, as gazebo_ros does. If roscore is
 restarted, the node registers everything again with the new master and sets /use_sim_time there too
-(master_reconnect).
+(master_reconnect). When the node exits (Ctrl-C, the launch ending, a bad parameter), it puts /use_sim_time back
+as it was before: as ~use_sim_time_before says (true, false or unset: tb3_sim.launch records what it found), else
+as the node found it; a roscore that outlives the simulator then serves wall-clock nodes again (sim_clock).
 View: when $DISPLAY (or $WAYLAND_DISPLAY) is set and ~headless is false, a top-down window (see window) shows
 the world and offers the Gazebo box tool; physics then runs in a second thread while Qt owns the main thread.
 Closing the window leaves the simulation running headless, as closing gzclient leaves gzserver; Ctrl-C stops
@@ -79,6 +81,7 @@ from std_srvs.srv import Empty, EmptyResponse
 from tf2_msgs.msg import TFMessage
 
 from master_reconnect import keep_registered
+from sim_clock import read_state, restore_state
 from stop_request import StopRequest
 from stop_request.closed_topic import shutting_down
 from tb3_sim.core.diff_drive import validate_command
@@ -103,6 +106,7 @@ from tb3_sim.view.scene import Trails, scene_of
 NODE_NAME = "gazebo"
 PACKAGE = "tb3_sim"
 USE_SIM_TIME_PARAM = "/use_sim_time"
+USE_SIM_TIME_BEFORE_PARAM = "~use_sim_time_before"
 WARNING_THROTTLE_S = 5.0
 PAUSED_POLL_S = 0.05
 MASTER_RETRY_S = 1.0
@@ -317,7 +321,8 @@ def worlds_dir():
 
 
 def ensure_use_sim_time():
-    """Set /use_sim_time to true on the master if no one has set it (launch files set it themselves).
+    """Set /use_sim_time to true on the master if no one has set it (launch files set it themselves); returns
+    the state found (sim_clock.read_state: 'true', 'false' or 'unset').
 
     Waits for the master like rospy.init_node does, so `rosrun` before `roscore` just waits.
     """
@@ -325,9 +330,10 @@ def ensure_use_sim_time():
     waiting = False
     while True:
         try:
+            found = read_state(master)
             if not master.hasParam(USE_SIM_TIME_PARAM):
                 master.setParam(USE_SIM_TIME_PARAM, True)
-            return
+            return found
         except OSError:
             if not waiting:
                 print(f"tb3_sim: waiting for the ROS master at {rosgraph.get_master_uri()}", file=sys.stderr)
@@ -353,11 +359,28 @@ def _tf_prefix_param(namespace):
         return None
 
 
+def put_back_use_sim_time(state):
+    """Restore /use_sim_time to `state` on exit, and drop ~use_sim_time_before, which would be stale for a later
+    node of this name; a master already gone took both parameters with it."""
+    try:
+        master = rosgraph.Master(NODE_NAME)
+        recorded = rospy.resolve_name(USE_SIM_TIME_BEFORE_PARAM)
+        if master.hasParam(recorded):
+            master.deleteParam(recorded)
+        restore_state(master, state)
+    except ValueError as error:
+        rospy.logwarn(f"tb3_sim: /use_sim_time left as it is: ~use_sim_time_before: {error}")
+    except (OSError, rosgraph.MasterException):
+        pass
+
+
 def main():
     """Entry point of `rosrun tb3_sim tb3_sim_node`; exits 1 with a one-line reason on bad parameters."""
+    use_sim_time_before = None
     try:
-        ensure_use_sim_time()
+        use_sim_time_found = ensure_use_sim_time()
         rospy.init_node(NODE_NAME, disable_rostime=True, disable_signals=True)
+        use_sim_time_before = rospy.get_param(USE_SIM_TIME_BEFORE_PARAM, use_sim_time_found)
         stop = StopRequest()
         stop.install()
         try:
@@ -378,4 +401,7 @@ def main():
             node.spin(stop)
     except (KeyboardInterrupt, rospy.ROSInterruptException):
         pass
+    finally:
+        if use_sim_time_before is not None:
+            put_back_use_sim_time(use_sim_time_before)
     rospy.signal_shutdown("tb3_sim stopping")

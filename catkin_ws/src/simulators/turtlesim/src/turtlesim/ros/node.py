@@ -22,8 +22,11 @@ original's graph:
 Console lines are in roscpp's format (`[ INFO] [secs.nanosecs]: ...`, see ros/console.py).
 
 Timing: every TICK_INTERVAL_MS of wall-clock time the core steps by its fixed DT; /use_sim_time
-plays no part (the original's QTimer). Callbacks run on rospy's threads but hold one lock, so
-each runs entirely before or after a tick, never during one (the original's spinOnce order).
+plays no part (the original's QTimer); when it is true and no /clock comes, the node says so once (sim_clock),
+as the nodes that drive the turtle on rospy time would wait for ever. Service calls are answered at the start of
+the next tick, before the turtles move, in the order they came (the original's spinOnce; see PendingCalls): a
+/clear right after a teleport clears the teleport's line. cmd_vel callbacks hold the tick's lock, so each runs
+entirely before or after a tick, never during one.
 Failures reach clients as roscpp's do: `responded with an error: b''` for the original's
 `return false`, the exception text for roscpp's InvalidNameException.
 """
@@ -36,10 +39,12 @@ import rospy
 from std_srvs.srv import Empty, EmptyResponse
 
 from master_reconnect import keep_registered
+from sim_clock import warn_if_clock_missing
 from stop_request import StopRequest
 from stop_request.closed_topic import shutting_down
 from turtlesim.core.constants import BACKGROUND_PARAMS, DEFAULT_BACKGROUND, TICK_INTERVAL_MS
 from turtlesim.core.errors import InvalidNameError, TurtleSimError, UnknownTurtleError
+from turtlesim.core.pending_calls import CallAbandoned, PendingCalls
 from turtlesim.core.simulation import TurtleSim
 from turtlesim.core.ticker import run_ticks
 from turtlesim.ros.canvas import CanvasPublisher
@@ -110,6 +115,7 @@ class TurtleSimNode:
         """
         self._lock = threading.Lock()
         self._stop = stop
+        self._pending = PendingCalls(lambda: stop.is_set() or rospy.is_shutdown())
         self._renderer = SceneRenderer()
         self._view_changed = True
         self._last_poses = []
@@ -133,6 +139,8 @@ class TurtleSimNode:
         if self._stop.is_set() or rospy.is_shutdown():
             return False
         with self._lock:
+            if self._pending.run_all():
+                self._view_changed = True
             results = self._sim.step(time.time())
             try:
                 for name, result in results:
@@ -214,13 +222,14 @@ class TurtleSimNode:
         return EmptyResponse()
 
     def _serve(self, action, *args):
-        """Run one service action under the lock; core errors become ServiceFailure."""
-        with self._lock:
-            self._view_changed = True
-            try:
-                return action(*args)
-            except TurtleSimError as error:
-                raise failure_for(error) from None
+        """Run one service action at the start of the next update, as the original's spinOnce does (see
+        PendingCalls); core errors become ServiceFailure."""
+        try:
+            return self._pending.submit(action, *args)
+        except TurtleSimError as error:
+            raise failure_for(error) from None
+        except CallAbandoned as error:
+            raise ServiceFailure(str(error)) from None
 
     def _spawn(self, request):
         name = self._sim.spawn(request.name, request.x, request.y, request.theta)
@@ -304,6 +313,7 @@ def main():
     with_window = window_wanted(headless)
     node = TurtleSimNode(stop, snapshot_service, publish_canvas=publish_canvas)
     keep_registered()
+    warn_if_clock_missing()
     try:
         if with_window:
             run_window(node.tick, node.next_frame, rospy.myargv()[:1])

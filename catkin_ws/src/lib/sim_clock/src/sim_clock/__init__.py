@@ -1,0 +1,5 @@
+"""sim_clock: /use_sim_time put back as a simulator found it (param), and a warning when it is stuck (watch)."""
+from sim_clock.param import UNSET, parse_state, read_state, restore_state
+from sim_clock.watch import wait_for_clock, warn_if_clock_missing
+
+__all__ = ["UNSET", "parse_state", "read_state", "restore_state", "wait_for_clock", "warn_if_clock_missing"]
