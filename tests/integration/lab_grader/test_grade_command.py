@@ -43,6 +43,8 @@ def test_sudo_e_rosrun_merges_shards(tmp_path):
 @pytest.mark.parametrize("arguments", ["submissions/ --out grades/", "'my class/' --suite week4 --out grades/"])
 def test_without_root_it_says_what_to_type(tmp_path, arguments):
     tmp_path.chmod(0o777)
+    for folder in ("submissions", "my class"):   # paths that exist: a missing one is told first
+        (tmp_path / folder).mkdir()
     result = in_ros_terminal("rosrun lab_grader grade " + arguments, tmp_path, user="nobody")
     assert "grade: must run as root" in result.stdout, result.stdout
     assert result.stdout.splitlines()[-1].strip() == FORM + " " + arguments, result.stdout

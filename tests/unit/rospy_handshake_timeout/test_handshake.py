@@ -53,10 +53,12 @@ def test_an_idle_connection_times_out_in_its_own_thread_and_keeps_its_timeout(sh
 def test_a_header_is_read_as_before():
     module, results = stand_in()
     server_end, client_end = socket.socketpair()
+    # a new socket's timeout is socket.getdefaulttimeout(): None, or 60 s once rospy has run in this process
+    timeout_before = server_end.gettimeout()
     client_end.sendall(encode_ros_handshake_header({"callerid": "/talker", "topic": "/chatter"}))
     module.TCPROSServer()._tcp_server_callback(server_end, ("127.0.0.1", 1))
     header, timeout = results.get(timeout=5)
-    assert header == {"callerid": "/talker", "topic": "/chatter"} and timeout is None
+    assert header == {"callerid": "/talker", "topic": "/chatter"} and timeout == timeout_before
 
 
 def test_outbound_reads_are_untouched_and_patching_twice_changes_nothing(short_timeout):
