@@ -1,23 +1,27 @@
 """Verdicts and scoring: points by weight, the results file (strict JSON, written atomically), the judgement of
 scripted observations against the Week 4 suite's expectations, and a run against a fake context in which
-checks raise, time out or are interrupted: the results are always complete and written."""
+checks raise, time out or are interrupted: the results are always complete and written; and interference (a
+submission tampering with the measurement) outranking every other verdict."""
 import json
 import math
 import os
 
 import pytest
 
-from lab_grader.checks import runner, service_checks
+from lab_grader.checks import interference, runner, service_checks
 from lab_grader.checks.fields import same_value
+from lab_grader.checks.ground_truth import Seen, WorldChange
 from lab_grader.checks.motion import Observation
 from lab_grader.checks.verdicts import (
     ERROR,
     FAIL,
+    INTERFERENCE,
     PASS,
     RESULTS_SCHEMA,
     CheckError,
     CheckResult,
     FoundService,
+    InterferenceError,
     Interrupted,
     Verdict,
     json_safe,
@@ -293,3 +297,42 @@ def test_main_writes_nothing_for_a_bad_suite(tmp_path, capsys):
     assert runner.main(["--suite", "week9", "--out", str(out)]) == 2
     assert "no suite named 'week9'" in capsys.readouterr().err
     assert not out.exists()
+
+
+# ---- interference ----------------------------------------------------------------------------------------------------
+
+def test_interference_outranks_a_perfect_looking_motion_and_names_what_was_done():
+    """A submission that forged its own /odom and paused physics gets "interference", never "pass", whatever the
+    recording shows; the reason and the evidence name what it did."""
+    seen = Seen(samples=(), changes=(WorldChange(101.0, "pause_physics", ""),
+                                     WorldChange(106.0, "set_model_state", "turtlebot3_waffle")), paused_at=(101.0,))
+    words = interference.findings(seen, {"/odom": {"/fake_move_server"}, "/clock": {"/fake_move_server"}}, False,
+                                  "/gazebo")
+    observation = observe([(5.0, 0.1, 0), (1.0, 0, 0)], {"response_signal": True, "response_message": "done"})
+    verdict = judge("move_true", observation._replace(interference=tuple(words)))
+    assert verdict.verdict == INTERFERENCE
+    for part in ("physics was paused (from 101.00 s", "called /gazebo/pause_physics at 101.00 s",
+                 "called /gazebo/set_model_state (turtlebot3_waffle)", "published /clock (node /fake_move_server)",
+                 "published /odom (node /fake_move_server)"):
+        assert part in verdict.reason, verdict.reason
+    assert verdict.evidence["interference"] == words
+    assert score([CheckResult("move_true", "", 16, verdict)]) == (0, 16)
+
+
+def test_only_other_nodes_publishing_the_simulators_topics_count():
+    publishers = [("/clock", ["/gazebo"]), ("/odom", ["/gazebo", "/student"]), ("/cmd_vel", ["/student"]),
+                  ("/tf", ["/gazebo"]), ("/rosout", ["/student"])]
+    assert interference.foreign_publishers(publishers, "/gazebo") == {"/odom": {"/student"}}
+    assert interference.findings(Seen((), (), ()), {}, True, "/gazebo") == [
+        "registered a node under the simulator's name /gazebo"]
+    assert interference.findings(Seen((), (), ()), {}, False, "/gazebo") == []
+
+
+def test_a_check_whose_preparation_meets_paused_physics_gets_interference():
+    class PausedContext(FakeContext):
+        def prepare(self, still_timeout_s):
+            raise InterferenceError(["physics was paused (from 3.00 s of sim time)"])
+
+    found = FakeContext().find_services(SUITE.services, 0)
+    verdict = service_checks.run_check(CHECKS["move_true"], SUITE, PausedContext(), found["/move_service"])
+    assert verdict.verdict == INTERFERENCE and "physics was paused" in verdict.reason

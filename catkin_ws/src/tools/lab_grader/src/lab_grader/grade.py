@@ -2,12 +2,13 @@
 
 The order is a marker's: copy the package into a fresh catkin workspace, `chmod +x` its Python files (as the course
 tells students to), build it with catkin_make on top of the lab, start roscore and, when the suite has a world,
-tb3_sim (trusted, in the box's own loopback-only network), start the student's nodes the way the course says
-(`rosrun <package> <file>`), then run the suite's checks (what `rosrun lab_grader run_checks` runs, as
-`python3 -m lab_grader.checks.runner`: trusted, so rosrun's package search, four catkin_find runs, is not needed)
-and read their JSON. A build that fails, a node that is missing or dies, a check runner that overruns: each is
-recorded with its evidence (the tail of the log) and the submission gets the checks' verdicts as far as they got;
-the batch goes on.
+tb3_sim (trusted, in the box's own loopback-only network, serving its ground truth on a private socket in the box's
+root-only folder, which the student's processes cannot see: lab_grader.checks.ground_truth), start the student's
+nodes the way the course says (`rosrun <package> <file>`), then run the suite's checks (what `rosrun lab_grader
+run_checks` runs, as `python3 -m lab_grader.checks.runner`: trusted, so rosrun's package search, four catkin_find
+runs, is not needed) and read their JSON. A build that fails, a node that is missing or dies, a check runner that
+overruns: each is recorded with its evidence (the tail of the log) and the submission gets the checks' verdicts as
+far as they got; the batch goes on.
 
 Logs are written by the grader outside the student's workspace, under the submission's output folder.
 """
@@ -28,6 +29,7 @@ MASTER_READY_SERVICE = "/rosout/get_loggers"    # roscore's rosout node is up: t
 CHECKS_TIMEOUT_S = 600.0
 LOG_TAIL_CHARS = 3000
 ROS_PORT = 11311
+GROUND_TRUTH_SOCKET = "truth.sock"     # in the box's trusted folder (a Unix socket path must be short)
 RESULT_FILE = "result.json"
 REPORT_FILE = "report.html"
 CHECKS_FILE = "checks.json"
@@ -136,12 +138,14 @@ class SubmissionGrader:
             result["problems"].append("the package does not build (catkin_make)")
             return
         on_stage("starting roscore" if self.suite.world is None else "starting the simulator")
+        truth_socket = box.trusted_dir / GROUND_TRUTH_SOCKET
         box.start_trusted(["roscore", "-p", str(ROS_PORT)], self.env, out_dir / "roscore.log")
         if self.suite.world is None:
             ready_service, startup_log, what = MASTER_READY_SERVICE, out_dir / "roscore.log", "roscore"
         else:
             box.start_trusted(["roslaunch", "--wait", "tb3_sim", "tb3_sim.launch", "gui:=false",
-                               "world:=" + self.suite.world, "real_time_factor:={:g}".format(self.real_time_factor)],
+                               "world:=" + self.suite.world, "real_time_factor:={:g}".format(self.real_time_factor),
+                               "ground_truth_socket:={}".format(truth_socket)],
                               self.env, out_dir / "simulator.log")
             ready_service, startup_log, what = SIMULATOR_READY_SERVICE, out_dir / "simulator.log", "the simulator"
         ready = box.run_trusted(["python3", "-m", "lab_grader.wait_service", ready_service, str(SIMULATOR_START_S)],
@@ -164,7 +168,8 @@ class SubmissionGrader:
         checks_log = out_dir / "checks.log"
         on_stage("checks", checks_log)
         run = box.run_trusted(["python3", "-m", "lab_grader.checks.runner", "--suite", str(self.suite.path),
-                               "--out", str(out_dir / CHECKS_FILE)], self.env, checks_log, timeout_s=CHECKS_TIMEOUT_S)
+                               "--out", str(out_dir / CHECKS_FILE), "--ground-truth", str(truth_socket)],
+                              self.env, checks_log, timeout_s=CHECKS_TIMEOUT_S)
         for entry in nodes:
             if isinstance(entry, NodeStart):
                 result["nodes"].append(entry._asdict())

@@ -12,7 +12,8 @@ body { font: 14px/1.4 system-ui, sans-serif; margin: 2em auto; max-width: 1100px
 h1 { font-size: 1.5em; } table { border-collapse: collapse; width: 100%; margin: 1em 0; }
 th, td { border-bottom: 1px solid #ddd; padding: 4px 8px; text-align: left; vertical-align: top; }
 .pass { color: #176b2c; font-weight: 600; } .fail { color: #b3261e; font-weight: 600; }
-.error { color: #8a5300; font-weight: 600; } pre { background: #f6f6f4; padding: 8px; overflow: auto; }
+.error { color: #8a5300; font-weight: 600; } .interference { color: #6a1b9a; font-weight: 600; }
+pre { background: #f6f6f4; padding: 8px; overflow: auto; }
 details summary { cursor: pointer; color: #1f4ea3; } img { max-width: 100%; border: 1px solid #ddd; }
 """
 

@@ -23,6 +23,8 @@ Private parameters (all optional; see `tb3_sim.ros.node` for what each one does)
     ~camera_width            model's    camera image width in pixels, 16..4096 (Waffle's R200 1920, Waffle Pi 640)
     ~camera_height           model's    camera image height in pixels, 16..4096 (1080, 480)
     ~camera_rate             model's    camera frames per second of sim time, (0, 1000] (30)
+    ~ground_truth_socket     ""         a Unix socket path: serve the robot's true motion and the world changes
+                                        to one trusted client (the grader; see ground_truth); empty: off
 The camera settings apply to every robot that has a camera; unset, each camera keeps its model's own.
 """
 
@@ -67,6 +69,7 @@ class SimConfig:
     camera_width: Optional[int] = None
     camera_height: Optional[int] = None
     camera_rate: Optional[float] = None
+    ground_truth_socket: str = ""
 
 
 def resolve_world(value, worlds_dir):
@@ -119,6 +122,7 @@ def config_from_params(params, worlds_dir):
         camera_height=reader.optional(reader.integer, "camera_height", CAMERA_SIZE_RANGE_PX),
         camera_rate=reader.optional(reader.number, "camera_rate", minimum=0.0, maximum=MAX_CAMERA_RATE_HZ,
                                     exclusive_minimum=True),
+        ground_truth_socket=reader.optional(reader.text, "ground_truth_socket") or "",
     )
 
 

@@ -79,7 +79,8 @@ class Observation(NamedTuple):
     (sim s) the request went out and the reply came back, every /odom sample from before the call until `settle_s`
     after the reply (None when the suite has no robot), and the front LiDAR distance once still (m; None when
     nothing was in range, or when not measured: see `front_measured`). `server_error` is True when the error is
-    the server's own answer (its callback raised), not a timeout or a broken connection."""
+    the server's own answer (its callback raised), not a timeout or a broken connection. `interference` lists what
+    the submission did to the measurement meanwhile, in words (lab_grader.checks.interference; empty: nothing)."""
 
     request: Dict[str, Any]
     reply: Optional[Dict[str, Any]]
@@ -90,6 +91,7 @@ class Observation(NamedTuple):
     front_distance_m: Optional[float] = None
     front_measured: bool = False
     server_error: bool = False
+    interference: Tuple[str, ...] = ()
 
 
 class MotionError(ValueError):

@@ -5,7 +5,8 @@ is the real one; the unit tests use a fake): service checks go to lab_grader.che
 to lab_grader.checks.action_checks. A check that cannot be run (a service not found, the runner interrupted, the
 context failing to start) gets an error verdict; every check of the suite is listed in the results.
 
-`main()` is `rosrun lab_grader run_checks --suite <name or path> --out <results.json> [--check-timeout S]`:
+`main()` is `rosrun lab_grader run_checks --suite <name or path> --out <results.json> [--check-timeout S]
+[--ground-truth SOCKET]` (a suite with a world needs SOCKET, tb3_sim's ~ground_truth_socket):
 the results file (lab_grader.checks.verdicts) is always written, atomically, also when checks errored or the
 runner was interrupted (then "complete": false); exit code 0 once it is written, 2 for a bad suite or arguments
 (nothing written), 1 if the file could not be written. Each check prints one line, `[3/17] pass  timed_fwd ...`,
@@ -119,6 +120,9 @@ def parse_args(argv):
     parser.add_argument("--out", required=True, type=Path, help="the results file to write (JSON)")
     parser.add_argument("--check-timeout", type=positive_seconds, default=None, metavar="S",
                         help="reply timeout of every check, seconds of sim time (default: each check's timeout_s)")
+    parser.add_argument("--ground-truth", metavar="SOCKET", default=None,
+                        help="tb3_sim's private ground-truth socket (its ~ground_truth_socket); needed when the "
+                        "suite has a world: the checks measure the robot through it, never through /odom")
     # ROS remappings (name:=value) are for rospy, not for us, as rospy.myargv would strip them.
     return parser.parse_args([arg for arg in argv if ":=" not in arg])
 
@@ -136,7 +140,7 @@ def main(argv=None):
     def make_context():
         # Imported here so that the checks' logic above imports (and is unit-tested) without rospy.
         from lab_grader.checks.context import GradingContext
-        contexts.append(GradingContext(robot=suite.world is not None))
+        contexts.append(GradingContext(robot=suite.world is not None, ground_truth=args.ground_truth))
         return contexts[-1]
 
     document = run_suite(suite, make_context, args.check_timeout, log=lambda line: print(line, flush=True))

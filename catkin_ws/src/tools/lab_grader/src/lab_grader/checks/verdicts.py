@@ -15,7 +15,7 @@ The results file (JSON, schema `RESULTS_SCHEMA`), written atomically by `write_r
       },
       "checks": [
         {"id": "move_true", "title": "...", "weight": 16,
-         "verdict": "pass" | "fail" | "error",
+         "verdict": "pass" | "fail" | "error" | "interference",
          "reason": "one line: what was expected and what happened",
          "evidence": {"request": {...}, "reply": {...} | null,
                       "motion": {"duration_s", "forward_m", "lateral_m", "turn_deg", "still_at_end", ...} | null,
@@ -31,6 +31,8 @@ The results file (JSON, schema `RESULTS_SCHEMA`), written atomically by `write_r
 Verdicts: pass / fail when the service answered and the measurement was made (fail: it was measured and is
 wrong); error when it could not be measured: the service was missing, the call raised, it did not reply in
 time, or the robot could not be prepared. Errors score 0 like failures; the orchestrator may tell them apart.
+Interference: the submission tampered with what the check measures (paused physics, teleported the robot,
+published the simulator's topics; lab_grader.checks.interference): 0 points, the reason names what it did.
 Non-finite floats (a NaN request field) are written as the strings "nan", "inf", "-inf" so the file is strict JSON;
 the file is compact (no indentation: a suite's trajectories are thousands of numbers): `python3 -m json.tool` shows
 it indented.
@@ -48,13 +50,23 @@ RESULTS_SCHEMA = "lab_grader.results/1"
 PASS = "pass"
 FAIL = "fail"
 ERROR = "error"
-VERDICTS = (PASS, FAIL, ERROR)
+INTERFERENCE = "interference"
+VERDICTS = (PASS, FAIL, ERROR, INTERFERENCE)
 MAX_REASON_CHARS = 400
 
 
 class CheckError(GraderError):
     """A check could not be measured (the simulator stopped, the robot would not come to rest): an error verdict
     with this text."""
+
+
+class InterferenceError(CheckError):
+    """The submission tampered with the measurement (lab_grader.checks.interference): an interference verdict
+    naming `findings` (what it did, in words)."""
+
+    def __init__(self, findings):
+        super().__init__("; ".join(findings))
+        self.findings = tuple(findings)
 
 
 class Interrupted(CheckError):
@@ -79,6 +91,12 @@ class Verdict(NamedTuple):
     @classmethod
     def errored(cls, reason, evidence=None):
         return cls(ERROR, one_line(reason), dict(evidence or {}))
+
+    @classmethod
+    def interfered(cls, what, evidence=None):
+        """`what`: the findings in words (lab_grader.checks.interference.findings)."""
+        return cls(INTERFERENCE, one_line("the submission interfered with the measurement: " + "; ".join(what)),
+                   dict(evidence or {}, interference=list(what)))
 
 
 class FoundService(NamedTuple):
