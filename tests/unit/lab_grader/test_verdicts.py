@@ -70,8 +70,8 @@ def test_the_results_document_has_the_schema():
     assert document["schema"] == RESULTS_SCHEMA and document["suite"] == "week4"
     assert document["score"] == 16 and document["max_score"] == 22 and document["complete"] is True
     assert document["services"] == services
-    assert document["checks"][0] == {"id": "move_true", "title": "move_true", "weight": 16, "verdict": "pass",
-                                     "reason": "why", "evidence": {}}
+    assert document["checks"][0] == {"id": "move_true", "title": "move_true", "kind": "required", "weight": 16,
+                                     "verdict": "pass", "reason": "why", "evidence": {}}
 
 
 def test_write_results_is_atomic_strict_json_and_leaves_no_temporary_file(tmp_path):
@@ -128,7 +128,7 @@ def test_a_move_backwards_fails_naming_the_direction():
     verdict = judge("move_true", observe([(5.0, -0.1, 0), (1.0, 0, 0)], {"response_signal": True,
                                                                           "response_message": ""}))
     assert verdict.verdict == FAIL
-    assert "expected to drive forwards 0.4..0.6 m along its initial heading, it drove backwards 0.500 m" \
+    assert "expected to drive forwards 0.35..0.6 m along its initial heading, it drove backwards 0.500 m" \
         in verdict.reason
 
 
@@ -137,8 +137,20 @@ def test_a_move_that_is_too_short_and_never_stops_lists_both():
                                          reply_after=2.0))
     assert verdict.verdict == FAIL
     assert "it drove forwards 0.29" in verdict.reason
-    assert "expected the motion to last 4.5..5.5 s of sim time, it was still moving" in verdict.reason
+    assert "expected the motion to last 4..5.5 s of sim time, it was still moving" in verdict.reason
     assert "expected the robot to be still 1 s after the reply, it was moving" in verdict.reason
+
+
+def test_the_course_templates_whole_second_timing_passes():
+    """`while rospy.get_rostime().secs - start.secs < 5` started at x.9 s stops after 4.1 s (0.41 m at 0.1 m/s),
+    a 2 s one after 1.1 s: what the course's own solution does, so both pass."""
+    five = judge("move_true", observe([(4.1, 0.1, 0), (1.0, 0, 0)], {"response_signal": True,
+                                                                      "response_message": ""}))
+    assert five.verdict == PASS, five.reason
+    two = judge("timed_fwd", observe([(1.1, 0.1, 0), (1.0, 0, 0)], {"success": True}))
+    assert two.verdict == PASS, two.reason
+    too_short = judge("timed_fwd", observe([(0.9, 0.1, 0), (1.0, 0, 0)], {"success": True}))
+    assert too_short.verdict == FAIL and "expected the motion to last 1..2.5 s" in too_short.reason
 
 
 def test_a_wrong_reply_fails_even_when_the_motion_is_right():
@@ -172,7 +184,7 @@ def test_timed_back_wants_backwards_and_the_right_duration():
     right = judge("timed_back", observe([(2.0, -0.1, 0), (1.0, 0, 0)], {"success": True}))
     assert right.verdict == PASS, right.reason
     too_long = judge("timed_back", observe([(3.0, -0.1, 0), (1.0, 0, 0)], {"success": True}))
-    assert too_long.verdict == FAIL and "expected the motion to last 1.7..2.3 s" in too_long.reason
+    assert too_long.verdict == FAIL and "expected the motion to last 1..2.5 s" in too_long.reason
     forwards = judge("timed_back", observe([(2.0, 0.1, 0), (1.0, 0, 0)], {"success": True}))
     assert "expected to drive backwards at least 0.05 m along its initial heading, it drove forwards" \
         in forwards.reason

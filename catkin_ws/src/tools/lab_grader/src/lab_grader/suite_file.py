@@ -30,8 +30,11 @@ The format (suites/week4.yaml is the worked example, with a comment on every key
       - move_server.py                #   names the course uses (rosrun <package> move_server.py)
     checks:
       - id: move_true                 # unique; lower case, digits and _
-        title: ...                    # one line for the report
-        weight: 16                    # points (>= 0) a pass is worth
+        title: ...                    # one line for the report: what is asked and the tolerance allowed
+        kind: required                # optional (required): what the course page asks; `advice`: robustness
+                                      #   beyond the page, reported but worth 0 points unless given a weight
+        weight: 16                    # points (>= 0) a pass is worth; required for a required check, 0 by
+                                      #   default for advice
         service: /move_service        # one of services[].name (or `action:`, see below)
         request: {request_signal: true}   # request fields (bool, int, float incl. .nan, str)
         timeout_s: 15                 # optional (suite's timeout_s): sim s to wait for the reply
@@ -90,8 +93,11 @@ TYPE_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*/[A-Za-z][A-Za-z0-9_]*$")
 SUITE_KEYS = ("suite", "title", "world", "real_time_factor", "settle_s", "timeout_s", "still_timeout_s",
               "by_type_grace_s", "services", "actions", "nodes", "checks")
 SERVICE_KEYS = ("name", "type", "wait_s")
-SERVICE_CHECK_KEYS = ("id", "title", "weight", "service", "request", "timeout_s", "expect")
-ACTION_CHECK_KEYS = ("id", "title", "weight", "action", "goal", "cancel_after_s", "timeout_s", "expect")
+SERVICE_CHECK_KEYS = ("id", "title", "kind", "weight", "service", "request", "timeout_s", "expect")
+ACTION_CHECK_KEYS = ("id", "title", "kind", "weight", "action", "goal", "cancel_after_s", "timeout_s", "expect")
+REQUIRED = "required"
+ADVICE = "advice"
+CHECK_KINDS = (REQUIRED, ADVICE)
 EXPECT_KEYS = ("reply", "reply_matches", "refused", "motion", "front_distance_m")
 ACTION_EXPECT_KEYS = ("state", "result", "result_matches", "feedback", "duration_s", "cancel_to_end_s")
 GOAL_STATES = ("PENDING", "ACTIVE", "PREEMPTED", "SUCCEEDED", "ABORTED", "REJECTED", "PREEMPTING", "RECALLING",
@@ -170,6 +176,7 @@ class CheckSpec(NamedTuple):
     action: Optional[str] = None
     goal: Optional[Dict[str, Any]] = None
     cancel_after_s: Optional[float] = None
+    kind: str = REQUIRED
 
 
 class Suite(NamedTuple):
@@ -262,6 +269,11 @@ class _Converters:
             self.fail(where, "expected a non-empty string, got {}".format(_show(value)))
         if pattern is not None and not pattern.match(value):
             self.fail(where, "{} is not {}".format(_show(value), what))
+        return value
+
+    def choice(self, value, where, choices):
+        if value not in choices:
+            self.fail(where, "expected one of {}, got {}".format(", ".join(choices), _show(value)))
         return value
 
     def boolean(self, value, where):
@@ -416,7 +428,8 @@ def _checks(convert, value, where, targets, default_timeout_s) -> Tuple[CheckSpe
         if any(check.id == check_id for check in result):
             convert.fail(entry.where("id"), "check id {} is used twice".format(check_id))
         title = entry.get("title", convert.text, required=True)
-        weight = entry.get("weight", convert.non_negative, required=True)
+        kind = entry.get("kind", lambda v, w: convert.choice(v, w, CHECK_KINDS), default=REQUIRED)
+        weight = entry.get("weight", convert.non_negative, required=kind == REQUIRED, default=0)
         timeout_s = float(entry.get("timeout_s", convert.positive, default=default_timeout_s))
         if is_action:
             action = entry.get("action", lambda v, w: _reference(convert, v, w, targets.actions, "actions"))
@@ -425,14 +438,15 @@ def _checks(convert, value, where, targets, default_timeout_s) -> Tuple[CheckSpe
             expect = entry.get("expect", lambda v, w: _action_expectation(convert, v, w),
                                default=_action_expectation(convert))
             result.append(CheckSpec(check_id, title, weight, None, None, timeout_s, expect, action=action, goal=goal,
-                                    cancel_after_s=None if cancel_after_s is None else float(cancel_after_s)))
+                                    cancel_after_s=None if cancel_after_s is None else float(cancel_after_s),
+                                    kind=kind))
             continue
         service = entry.get("service", lambda v, w: _reference(convert, v, w, targets.services, "services"),
                             required=True)
         request = entry.get("request", lambda v, w: convert.fields(v, w, convert.scalar), default={})
         expect = entry.get("expect", lambda v, w: _expectation(convert, v, w, targets.world),
                            default=_expectation(convert))
-        result.append(CheckSpec(check_id, title, weight, service, request, timeout_s, expect))
+        result.append(CheckSpec(check_id, title, weight, service, request, timeout_s, expect, kind=kind))
     return tuple(result)
 
 

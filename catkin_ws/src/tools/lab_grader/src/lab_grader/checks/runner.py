@@ -85,7 +85,7 @@ def run_suite(suite, make_context, check_timeout_s=None, log=print):
             except (Interrupted, KeyboardInterrupt):
                 interrupted = True
                 verdict = Verdict.errored("not run: the runner was interrupted", not_run_evidence(check))
-        result = CheckResult(check.id, check.title, check.weight, verdict)
+        result = CheckResult(check.id, check.title, check.weight, verdict, check.kind)
         results.append(result)
         log("[{}/{}] {}".format(number, len(suite.checks), summarize_verdicts([result])[0]))
 

@@ -14,7 +14,7 @@ The results file (JSON, schema `RESULTS_SCHEMA`), written atomically by `write_r
         ...
       },
       "checks": [
-        {"id": "move_true", "title": "...", "weight": 16,
+        {"id": "move_true", "title": "...", "kind": "required" | "advice", "weight": 16,
          "verdict": "pass" | "fail" | "error" | "interference",
          "reason": "one line: what was expected and what happened",
          "evidence": {"request": {...}, "reply": {...} | null,
@@ -23,7 +23,8 @@ The results file (JSON, schema `RESULTS_SCHEMA`), written atomically by `write_r
                       ...}},                                 # check-specific extras (reply_after_s, front_distance_m)
         ...
       ],
-      "score": 84, "max_score": 100,         # sum of the weights of passed checks / of all checks
+      "score": 84, "max_score": 100,         # sum of the weights of passed checks / of all checks (advice checks
+                                              # weigh 0 unless the suite gives them weight)
       "complete": true,                       # false when the runner was interrupted before every check ran
       "timing": {"wall_s": 41.2, "sim_s": 95.0}
     }
@@ -120,13 +121,15 @@ class CheckResult(NamedTuple):
     title: str
     weight: float
     verdict: Verdict
+    kind: str = "required"     # suite_file.REQUIRED or ADVICE
 
     @property
     def points(self):
         return self.weight if self.verdict.verdict == PASS else 0
 
     def as_json(self):
-        return {"id": self.id, "title": self.title, "weight": self.weight, "verdict": self.verdict.verdict,
+        return {"id": self.id, "title": self.title, "kind": self.kind, "weight": self.weight,
+                "verdict": self.verdict.verdict,
                 "reason": self.verdict.reason, "evidence": self.verdict.evidence}
 
 
