@@ -14,8 +14,7 @@ SUITES_DIR = Path(__file__).resolve().parents[3] / "catkin_ws/src/tools/lab_grad
 VALID = {
     "suite": "demo",
     "world": "approach_arena",
-    "services": [{"name": "/move_service", "type": "tuos_msgs/SetBool"}],
-    "nodes": ["move_server.py"],
+    "services": [{"name": "/move_service", "type": "tuos_msgs/SetBool", "node": "move_server.py"}],
     "checks": [{
         "id": "move_true", "title": "moves", "weight": 10, "service": "/move_service",
         "request": {"request_signal": True},
@@ -43,6 +42,11 @@ def test_the_shipped_week4_suite_loads_with_17_checks_worth_100_points_of_which_
     suite = load_suite(SUITES_DIR / "week4.yaml")
     assert suite.name == "week4" and suite.world == "approach_arena" and suite.max_score == 100
     assert suite.nodes == ("move_server.py", "timed_move_server.py", "approach_server.py")
+    exercises = suite.exercises()
+    assert [(exercise.node, [spec.name for spec in exercise.services], len(exercise.check_ids))
+            for exercise in exercises] == [("move_server.py", ["/move_service"], 2),
+                                           ("timed_move_server.py", ["/timed_move_service"], 7),
+                                           ("approach_server.py", ["/approach_service"], 8)]
     assert [service.name for service in suite.services] == ["/move_service", "/timed_move_service",
                                                             "/approach_service"]
     assert len(suite.checks) == 17 and sum(check.weight for check in suite.checks) == 100
@@ -131,8 +135,9 @@ MOTION = CHECK + ("expect", "motion")
     (_set(("services", 0, "wait"), 3), "services[0].wait", "unknown key"),
     (_set(("services", 0, "wait_s"), float("nan")), "services[0].wait_s", "finite number"),
     (_duplicate_service, "services[1].name", "listed twice"),
-    (_set(("nodes", 0), "src/move_server.py"), "nodes[0]", "a file name"),
-    (_set(("nodes", 0), {"executable": "move_server.py"}), "nodes[0]", "non-empty string"),
+    (_set(("services", 0, "node"), "src/move_server.py"), "services[0].node", "a file name"),
+    (_set(("services", 0, "node"), {"executable": "move_server.py"}), "services[0].node", "non-empty string"),
+    (_delete(("services", 0, "node")), "services[0].node", "missing"),
     (_set(("real_time_factor",), 0), "real_time_factor", "must be > 0"),
     (_set(("checks",), "all"), "checks", "non-empty list"),
     (_delete(CHECK + ("id",)), "checks[0].id", "missing"),

@@ -6,7 +6,9 @@ to lab_grader.checks.action_checks. A check that cannot be run (a service not fo
 context failing to start) gets an error verdict; every check of the suite is listed in the results.
 
 `main()` is `rosrun lab_grader run_checks --suite <name or path> --out <results.json> [--check-timeout S]
-[--ground-truth SOCKET]` (a suite with a world needs SOCKET, tb3_sim's ~ground_truth_socket):
+[--ground-truth SOCKET] [--exercise FILE]` (a suite with a world needs SOCKET, tb3_sim's ~ground_truth_socket;
+--exercise runs only the checks of the services and actions the course's FILE serves, for the grader, which runs
+each exercise's node alone):
 the results file (lab_grader.checks.verdicts) is always written, atomically, also when checks errored or the
 runner was interrupted (then "complete": false); exit code 0 once it is written, 2 for a bad suite or arguments
 (nothing written), 1 if the file could not be written. Each check prints one line, `[3/17] pass  timed_fwd ...`,
@@ -99,6 +101,16 @@ def run_suite(suite, make_context, check_timeout_s=None, log=print):
     return results_document(suite.name, services, results, complete=not interrupted, timing=timing)
 
 
+def exercise_suite(suite, node):
+    """`suite` cut down to the services, actions and checks of the exercise whose course file is `node`."""
+    exercise = next((exercise for exercise in suite.exercises() if exercise.node == node), None)
+    if exercise is None:
+        raise SuiteError("{}: no exercise is served by a file named {} (files: {})".format(
+            suite.path.name, node, ", ".join(suite.nodes)))
+    return suite._replace(services=exercise.services, actions=exercise.actions,
+                          checks=tuple(check for check in suite.checks if check.id in exercise.check_ids))
+
+
 # ---- command line ---------------------------------------------------------------------------------------------------
 
 def positive_seconds(text):
@@ -120,6 +132,9 @@ def parse_args(argv):
     parser.add_argument("--out", required=True, type=Path, help="the results file to write (JSON)")
     parser.add_argument("--check-timeout", type=positive_seconds, default=None, metavar="S",
                         help="reply timeout of every check, seconds of sim time (default: each check's timeout_s)")
+    parser.add_argument("--exercise", metavar="FILE", default=None,
+                        help="only the checks of the services and actions that the course's file FILE serves (a "
+                        "suite's node:)")
     parser.add_argument("--ground-truth", metavar="SOCKET", default=None,
                         help="tb3_sim's private ground-truth socket (its ~ground_truth_socket); needed when the "
                         "suite has a world: the checks measure the robot through it, never through /odom")
@@ -131,6 +146,8 @@ def main(argv=None):
     args = parse_args(sys.argv[1:] if argv is None else argv)
     try:
         suite = load_suite(args.suite)
+        if args.exercise is not None:
+            suite = exercise_suite(suite, args.exercise)
     except SuiteError as error:
         print("run_checks: {}".format(error), file=sys.stderr)
         return 2
