@@ -3,9 +3,12 @@ exercise's services and actions, found as the checks find them (lab_grader.check
 course's name or by any name whose server declares the expected type's md5sum; an action by the course's
 namespace or any namespace whose <ns>/result topic has an ActionResult type of the same name. KIND is `service` or
 `action`. Prints {"found": {NAME: the name found, ...}} as JSON and exits 0 once every one is found (with --any: one
-of them), 1 after S wall seconds without. The grader runs it beside one student script at a time to learn which of
-a submission's scripts serves an exercise, and to notice early when a node dies before it serves anything. No node
-is registered (it only asks the master and the servers' TCPROS headers, as `rosservice type` does)."""
+of them), 1 after S wall seconds without, or (with --give-up S2) S2 wall seconds after a new node came up (its
+<node>/get_loggers service, which rospy registers at init_node) without offering any: a script that is not the
+exercise's server is let go as soon as it is seen running, however long a loaded machine took to start it.
+The grader runs it beside one student script at a time to learn which of a submission's scripts serves an
+exercise. No node is registered (it only asks the master and the servers' TCPROS headers, as `rosservice type`
+does)."""
 import argparse
 import json
 import sys
@@ -50,6 +53,11 @@ def offered_actions(master):
             if name.endswith("/result") and topic_type.endswith("ActionResult")}
 
 
+def running_nodes(master):
+    """The nodes on the master that rospy has initialised (each offers <node>/get_loggers)."""
+    return {name[:-len("/get_loggers")] for name, _ in master.getSystemState()[2] if name.endswith("/get_loggers")}
+
+
 def find(specs, master, headers):
     """{spec name: the name that serves it} for the specs (kind, name, type) offered now."""
     services = offered_services(master, headers) if any(kind == "service" for kind, _, _ in specs) else {}
@@ -79,19 +87,28 @@ def main(argv=None):
     parser = argparse.ArgumentParser(prog="find_server", description=__doc__.split("\n\n")[0])
     parser.add_argument("--timeout", type=float, required=True, help="wall seconds to wait")
     parser.add_argument("--any", action="store_true", help="succeed once any one of them is found")
+    parser.add_argument("--give-up", type=float, default=None, metavar="S2",
+                        help="fail S2 wall seconds after a new node has come up without offering them")
     parser.add_argument("specs", nargs="+", type=parse_spec, metavar="KIND:NAME:TYPE")
     args = parser.parse_args(argv)
     master = rosgraph.Master(CALLER_ID)
     headers = {}
     deadline = time.monotonic() + args.timeout
     found = {}
+    nodes_before = None
     while True:
         try:
             found = find(args.specs, master, headers)
+            nodes = running_nodes(master)
         except (rosgraph.MasterError, OSError):
-            found = {}
+            found, nodes = {}, nodes_before or set()
+        if nodes_before is None:
+            nodes_before = nodes
         if (found and args.any) or len(found) == len(args.specs) or time.monotonic() > deadline:
             break
+        if args.give_up is not None and nodes - nodes_before:
+            deadline = min(deadline, time.monotonic() + args.give_up)
+            nodes_before = nodes
         time.sleep(POLL_S)
     print(json.dumps({"found": found}), flush=True)
     return 0 if found and (args.any or len(found) == len(args.specs)) else 1

@@ -30,8 +30,9 @@ SIMULATOR_START_S = 60.0
 SIMULATOR_READY_SERVICE = "/gazebo/reset_world"
 MASTER_READY_SERVICE = "/rosout/get_loggers"    # roscore's rosout node is up: the master answers
 CHECKS_TIMEOUT_S = 600.0
-TRY_SCRIPT_S = 10.0            # a script tried for an exercise must offer its service (or action) within this
-FIND_POLL_S = 0.2
+TRY_SCRIPT_S = 60.0            # a script tried for an exercise must offer its service (or action) within this ...
+NODE_UP_GRACE_S = 5.0          # ... or within this once it has called init_node
+POLL_S = 0.2                   # how often the grader looks at a node, the check runner and find_server
 SCRIPT_SCAN_BYTES = 256 * 1024  # a script is a node when init_node appears this early in it
 LOG_TAIL_CHARS = 3000
 BUILD_LOG_CHARS = 200000       # how much of the build log is searched for catkin's error lines
@@ -179,7 +180,8 @@ class SubmissionGrader:
         exercises = self.suite.exercises()
         for number, exercise in enumerate(exercises, start=1):
             on_stage("exercise {}/{} ({}): finding its node".format(number, len(exercises), exercise.node))
-            node, server = self._start_server(box, submission, exercise, env, out_dir, number)
+            node, server = self._start_server(box, submission, exercise, env, out_dir, number,
+                                              served=[node["file"] for node in result["nodes"] if node["file"]])
             if server is None:
                 parts[exercise.node] = not_run(self.suite, exercise, node)
                 result["nodes"].append(node)
@@ -187,10 +189,10 @@ class SubmissionGrader:
             checks_log = out_dir / "checks-{}.log".format(number)
             on_stage("exercise {}/{} ({}): checks".format(number, len(exercises), exercise.node), checks_log)
             checks_file = out_dir / "checks-{}.json".format(number)
-            run = box.run_trusted(["python3", "-m", "lab_grader.checks.runner", "--suite", str(self.suite.path),
-                                   "--exercise", exercise.node, "--out", str(checks_file),
-                                   "--ground-truth", str(truth_socket)],
-                                  self.env, checks_log, timeout_s=CHECKS_TIMEOUT_S)
+            runner = box.start_trusted(["python3", "-m", "lab_grader.checks.runner", "--suite", str(self.suite.path),
+                                        "--exercise", exercise.node, "--out", str(checks_file),
+                                        "--ground-truth", str(truth_socket)], self.env, checks_log)
+            run = watch_checks(runner, server)
             crashed = not server.running()
             node.update(running_at_end=not crashed, **(crash_report(server.log_path) if crashed else {}))
             server.stop()
@@ -204,54 +206,64 @@ class SubmissionGrader:
             parts[exercise.node] = checks_as_crashed(checks, node) if crashed else checks
         result.update(combine(self.suite, parts))
 
-    def _start_server(self, box, submission, exercise, env, out_dir, number):
-        """Start the node that serves `exercise`, alone: the course's file when the submission has one, else each
-        of its scripts in turn (a file named like the course's first) until one offers the exercise's service or
-        action by type. Returns (the node's record for the report, its SandboxProcess or None)."""
+    def _start_server(self, box, submission, exercise, env, out_dir, number, served=()):
+        """Start the node that serves `exercise`, alone: the course's file when the submission has one (the check
+        runner then finds its services itself, and watch_checks notices if it dies), else each of its scripts in
+        turn (a file named like the course's first, the `served` files, which served earlier exercises, last) until
+        one offers the exercise's service or action by type (lab_grader.find_server). Returns (the node's record for
+        the report, its SandboxProcess or None)."""
         specs = (["service:{}:{}".format(spec.name, spec.type) for spec in exercise.services]
                  + ["action:{}:{}".format(spec.name, spec.type) for spec in exercise.actions])
-        wait_s = max(spec.wait_s for spec in exercise.services + exercise.actions)
-        course = find_node(submission, exercise.node)
-        if course is not None:
-            candidates, how = [course], "the course's file name"
-        else:
-            candidates, how = node_candidates(submission, exercise.node), "found by trying each script"
         node = {"exercise": exercise.node, "serves": [spec.name for spec in exercise.services + exercise.actions],
                 "file": None, "package": None, "found_by": None, "tried": [], "running_at_end": False,
                 "problem": None, "crashed": False, "traceback": None, "log_tail": None}
-        for package, path in candidates:
+
+        def start(package, path):
             relative = str(path.relative_to(submission.source_dir))
             node["tried"].append(relative)
-            log = out_dir / "node-{}-{}.log".format(number, path.name)
-            process = box.start_student(overlay("exec rosrun {} {}".format(package, path.name)), env, log)
-            finder = box.start_trusted(["python3", "-m", "lab_grader.find_server", "--timeout",
-                                        "{:g}".format(wait_s if course is not None else TRY_SCRIPT_S)]
-                                       + ([] if course is not None else ["--any"]) + specs,
-                                       self.env, out_dir / "find-{}.log".format(number))
-            while finder.running() and process.running():
-                time.sleep(FIND_POLL_S)
-            offered = finder.wait(FIND_POLL_S).returncode == 0 if process.running() else False
-            finder.kill()
             node.update(file=relative, package=package)
+            log = out_dir / "node-{}-{}.log".format(number, path.name)
+            return box.start_student(overlay("exec rosrun {} {}".format(package, path.name)), env, log), log
+
+        course = find_node(submission, exercise.node)
+        if course is not None:
+            node["found_by"] = "the course's file name"
+            return node, start(*course)[0]
+        candidates = sorted(node_candidates(submission, exercise.node),
+                            key=lambda candidate: str(candidate[1].relative_to(submission.source_dir)) in served)
+        for package, path in candidates:
+            process, log = start(package, path)
+            finder = box.start_trusted(["python3", "-m", "lab_grader.find_server", "--any", "--timeout",
+                                        "{:g}".format(TRY_SCRIPT_S), "--give-up", "{:g}".format(NODE_UP_GRACE_S)]
+                                       + specs, self.env,
+                                       out_dir / "find-{}.log".format(number))
+            while finder.running() and process.running():
+                time.sleep(POLL_S)
+            offered = process.running() and finder.wait(POLL_S).returncode == 0
+            finder.kill()
             if offered:
-                node["found_by"] = how
+                node["found_by"] = "found by trying each script"
                 return node, process
             if not process.running():
-                node.update(crash_report(log))
+                node["tried"][-1] += " (exited: {})".format(crash_report(log)["crash"])
             process.stop()
-            if course is not None:
-                break
-        if node["crashed"]:
-            node["problem"] = "{} exited before serving {}: {}".format(node["file"], ", ".join(node["serves"]),
-                                                                       node["crash"])
-        elif course is not None:
-            node["problem"] = "{} offered no {} within {:g} s".format(node["file"], " or ".join(specs), wait_s)
-        elif candidates:
-            node.update(file=None, package=None, problem="no file named {}, and none of the {} scripts tried offers "
-                        "{}".format(exercise.node, len(candidates), " or ".join(specs)))
-        else:
-            node["problem"] = "no file named {} and no other script in the submission".format(exercise.node)
+        node.update(file=None, package=None, problem=(
+            "no file named {}, and none of the {} scripts tried offers {}".format(
+                exercise.node, len(candidates), " or ".join(specs)) if candidates
+            else "no file named {} and no other script in the submission".format(exercise.node)))
         return node, None
+
+
+def watch_checks(runner, server):
+    """Wait for the check runner `runner` (a SandboxProcess) to end, at most CHECKS_TIMEOUT_S; if the student's
+    node `server` exits meanwhile, stop the runner at once (SIGINT: it writes the results it has, the rest "not
+    run"). Returns the runner's RunResult."""
+    deadline = time.monotonic() + CHECKS_TIMEOUT_S
+    while runner.running() and time.monotonic() < deadline:
+        if not server.running():
+            return runner.stop()
+        time.sleep(POLL_S)
+    return runner.wait(0)
 
 
 def crash_report(log_path):
@@ -279,7 +291,8 @@ def not_run(suite, exercise, node, why=None):
 def checks_as_crashed(checks, node):
     """`checks` (one exercise's results) with every error verdict turned into crashed: its node exited meanwhile."""
     reason = "the node {} exited: {}".format(node["file"], node["crash"])
-    changed = [dict(check, verdict=CRASHED, reason=one_line("{} ({})".format(reason, check["reason"])))
+    changed = [dict(check, verdict=CRASHED, reason=one_line(reason if check["reason"].startswith("not run")
+                                                            else "{} ({})".format(reason, check["reason"])))
                if check["verdict"] == ERROR else check for check in checks["checks"]]
     return dict(checks, checks=changed)
 
