@@ -5,6 +5,7 @@ import json
 import os
 import socket
 import stat
+import threading
 
 import pytest
 from std_srvs.srv import EmptyRequest
@@ -108,3 +109,22 @@ def test_a_reset_request_reports_no_change_and_the_front_distance_has_no_noise(c
     assert "unknown request" in client.next_of("reply")["error"]
     client.socket.sendall(b"not json\n")
     assert "expected" in client.next_of("reply")["error"]
+
+
+def test_the_channel_outlives_rospys_default_socket_timeout(fake_sim, tmp_path):
+    """rospy sets socket.setdefaulttimeout(60) once a node subscribes; the channel's sockets must not inherit it,
+    or a grader connecting a minute later finds no one accepting."""
+    previous = socket.getdefaulttimeout()
+    socket.setdefaulttimeout(0.2)
+    try:
+        sim = fake_sim(World(load_world(shipped_world_path("approach_arena")), Pose2D()))
+        served = GroundTruthChannel(str(tmp_path / "late.sock"), sim, IDENTITY)
+        try:
+            threading.Event().wait(0.5)        # longer than the default timeout: accept() must still wait
+            socket.setdefaulttimeout(None)
+            client = Client(str(tmp_path / "late.sock"))
+            assert client.read()["kind"] == "hello"
+        finally:
+            served.close()
+    finally:
+        socket.setdefaulttimeout(previous)

@@ -83,6 +83,9 @@ class GroundTruthChannel:
         if os.path.lexists(path):
             os.unlink(path)
         self._server = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        # Blocking without a timeout, whatever socket.setdefaulttimeout says: rospy sets 60 s there once the node
+        # subscribes, and an accept() or a client's readline() that timed out would end this channel.
+        self._server.settimeout(None)
         previous = os.umask(0o177)
         try:
             self._server.bind(path)
@@ -140,6 +143,7 @@ class GroundTruthChannel:
                 client, _ = self._server.accept()
             except OSError:
                 return
+            client.settimeout(None)
             with self._clients_lock:
                 self._clients.append(client)
                 if not self._send(client, encode(self._identity)):

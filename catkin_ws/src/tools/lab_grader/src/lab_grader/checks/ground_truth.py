@@ -21,6 +21,7 @@ from lab_grader.checks.motion import Sample
 from lab_grader.checks.verdicts import CheckError
 
 CONNECT_TIMEOUT_S = 30.0
+HELLO_TIMEOUT_S = 30.0
 REPLY_TIMEOUT_S = 10.0
 MAX_LINE_BYTES = 64 * 1024
 
@@ -69,9 +70,17 @@ class TruthClient:
         self._next_id = 0
         self._closed = None
         self._stream = self._socket.makefile("rb")
-        hello = self._read_line()
+        self._socket.settimeout(HELLO_TIMEOUT_S)
+        try:
+            hello = self._read_line()
+        except (OSError, ValueError) as error:
+            raise TruthLost("the ground-truth channel at {} did not introduce itself within {:.0f} s: {}".format(
+                path, HELLO_TIMEOUT_S, error)) from None
         if hello is None or hello.get("kind") != "hello":
             raise TruthLost("the ground-truth channel at {} did not introduce itself".format(path))
+        # Then blocking without a timeout, whatever socket.setdefaulttimeout says (rospy sets 60 s there): the
+        # reader thread waits for the simulator, which reports at least every 0.05 s of wall time while it runs.
+        self._socket.settimeout(None)
         self.identity = {key: hello.get(key) for key in ("node", "uri", "robot")}
         threading.Thread(target=self._read, name="ground-truth", daemon=True).start()
 
