@@ -1,7 +1,8 @@
 """lab_grader benchmarks for scripts/bench (wall-clock figures; never asserted):
 
-- wall time to grade one Week 4 submission (the lab's reference) at real-time factor 1 and 2 (target <= 45 s),
-  and where the time goes at each factor (the stages result.json records: building, starting, checks);
+- wall time to grade one Week 4 submission (the lab's reference) at real-time factor 1 (target <= 60 s) and 2
+  (target <= 35 s), and where the time goes at each factor (the stages result.json records: building, starting
+  the simulator, and per exercise finding its node and its checks, summed here);
 - how many check verdicts of the distinct samples (tests/integration/lab_grader/sample_submissions.py: every
   mistake and every self-contained hostile one) are the same at factor 2 as at factor 1: all of them, or the faster
   factor would not be used;
@@ -9,6 +10,7 @@
   (target <= 10 min on 2 cores).
 
     source scripts/env.sh && python3 tests/bench/grade_bench.py [class size]      (as root, like the grader)
+    (class size 0: only the single submission at each factor)
 """
 import json
 import subprocess
@@ -23,9 +25,9 @@ from integration.lab_grader.sample_submissions import SELF_CONTAINED, make_submi
 
 CLASS_SIZE = 20
 FAST_FACTOR = 2
-ONE_TARGET_S = 45.0
+ONE_TARGET_S = {1: 60.0, 2: 35.0}
 CLASS_TARGET_S = 600.0
-STAGES = ("building", "starting the simulator", "checks")
+STAGES = ("building", "starting the simulator", "finding its node", "checks")
 
 
 def grade(folder, out, factor, jobs):
@@ -50,10 +52,13 @@ def run(class_size=CLASS_SIZE):
         for factor in (1, FAST_FACTOR):
             seconds, results = grade(work / "one", work / "one-out-{}".format(factor), factor, jobs=1)
             rows.append(("grade one Week 4 submission (reference), factor {}".format(factor), seconds, "s",
-                         ONE_TARGET_S, "<="))
+                         ONE_TARGET_S[factor], "<="))
             stages = results["reference"]["stage_s"]
-            print("factor {}: {}".format(factor, ", ".join("{} {:.1f} s".format(stage, stages.get(stage, 0))
-                                                           for stage in STAGES)))
+            print("factor {}: {}".format(factor, ", ".join("{} {:.1f} s".format(stage, sum(
+                seconds for name, seconds in stages.items() if name == stage or name.endswith(": " + stage)))
+                for stage in STAGES)))
+        if not class_size:
+            return rows
         for name in SELF_CONTAINED:
             make_submission(name, work / "distinct")
         _, slow = grade(work / "distinct", work / "distinct-1", 1, jobs=2)

@@ -1,7 +1,9 @@
 """Sample submissions for the grader's tests, made from the lab's own Week 4 reference package (never from real
 students' code): the reference as it is, copies with one typical mistake each, written as a student would make
-it, copies that misbehave on purpose against the sandbox (hostile_code.py), and one package written from scratch
-in a student's own style (student_style/). `make_submission(name, folder)` writes one into `folder/<name>/`."""
+it, copies that misbehave on purpose against the sandbox (hostile_code.py), and packages written from scratch
+(student_style/): one in a student's own style, one in the course template's habits (week4_course_template:
+whole-second timing, module-level publishers, bare return values, the older message packages, other file names,
+two exercises on one service name). `make_submission(name, folder)` writes one into `folder/<name>/`."""
 import re
 import shutil
 from pathlib import Path
@@ -12,7 +14,8 @@ from .hostile_code import FORKS_CHILDREN, PRINTS_MEGABYTES, REACHES_NETWORK, SNO
 HERE = Path(__file__).resolve().parent
 REFERENCE = HERE.parents[2] / "catkin_ws" / "src" / "exercises" / "week4_services"
 # Written from scratch, not from the reference: {name: the package folder}.
-FROM_SCRATCH = {"student_style": HERE / "student_style" / "week4_alice"}
+FROM_SCRATCH = {"student_style": HERE / "student_style" / "week4_alice",
+                "course_template": HERE / "student_style" / "week4_course_template"}
 
 PLACEHOLDER = re.compile(r"@[A-Z_]+@")
 MOVE_MAIN = "def main():\n    rospy.init_node(NODE_NAME)\n"

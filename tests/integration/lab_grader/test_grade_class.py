@@ -145,23 +145,27 @@ def test_services_under_the_students_own_names_are_found_by_type_and_pass(graded
 
 
 @pytest.mark.slow
-def test_a_python2_print_statement_kills_the_node_and_errors_its_checks_with_the_log(graded):
+def test_a_python2_print_statement_crashes_the_node_and_its_checks_say_so_with_the_traceback(graded):
     result = results(graded[0])["python2_syntax"]
     for check_id in ("move_true", "move_false"):
         move = check(result, check_id)
-        assert move["verdict"] == "error" and move["reason"].startswith("service /move_service not found"), move
+        assert move["verdict"] == "crashed", move
+        assert move["reason"] == ("the node week4_services/nodes/move_server.py exited: SyntaxError: Missing "
+                                  "parentheses in call to 'print'. Did you mean print(...)?"), move["reason"]
     others_pass(result, "move_true", "move_false")
     assert result["services"]["/move_service"]["found"] is None
-    node = next(node for node in result["nodes"] if node["file"] == "move_server.py")
-    assert node["running_at_end"] is False and "SyntaxError" in node["log_tail"], node
-    assert all(node["running_at_end"] for node in result["nodes"] if node["file"] != "move_server.py")
+    node = next(node for node in result["nodes"] if node["exercise"] == "move_server.py")
+    assert node["crashed"] is True and node["running_at_end"] is False, node
+    assert node["traceback"].splitlines()[-1].startswith("SyntaxError: Missing parentheses"), node["traceback"]
+    assert all(node["running_at_end"] for node in result["nodes"] if node["exercise"] != "move_server.py")
 
 
 @pytest.mark.slow
-def test_a_package_that_does_not_build_gets_zero_and_its_build_log(graded):
+def test_a_package_that_does_not_build_gets_zero_and_catkins_error_lines(graded):
     result = results(graded[0])["does_not_build"]
     assert result["build"]["ok"] is False and result["score"] == 0
-    assert "CMake Error" in result["build"]["log_tail"] or "Parse error" in result["build"]["log_tail"]
+    assert result["build"]["errors"][0].startswith("CMake Error at week4_services/CMakeLists.txt"), result["build"]
+    assert any("Parse error" in line for line in result["build"]["errors"])
 
 
 @pytest.mark.slow
@@ -180,6 +184,14 @@ def test_the_reports_render_in_a_headless_browser_with_the_trajectory(graded):
         browser.driver.get((out / "reference" / "report.html").as_uri())
         assert browser.script("return document.getElementById('trajectory').naturalWidth;") > 100
         assert len(browser.driver.find_elements("css selector", "#checks tr")) > 5
+        assert len(browser.driver.find_elements("css selector", "#services tr")) == 4   # a header and 3 services
+        assert len(browser.driver.find_elements("css selector", "#nodes tr")) == 4
+        browser.driver.get((out / "python2_syntax" / "report.html").as_uri())
+        crashed = browser.script("return document.querySelector('#nodes pre.traceback').textContent;")
+        assert "SyntaxError: Missing parentheses" in crashed
+        assert "crashed" in browser.script("return document.querySelector('#checks').textContent;")
+        browser.driver.get((out / "does_not_build" / "report.html").as_uri())
+        assert "Parse error" in browser.script("return document.getElementById('build-errors').textContent;")
         browser.driver.get((out / "summary.html").as_uri())
         assert browser.script("return document.getElementById('histogram').naturalWidth;") > 100
         assert browser.console_errors() == []

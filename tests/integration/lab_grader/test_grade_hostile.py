@@ -36,7 +36,7 @@ READABLE = LAB_ROOT / "README.md"   # the lab checkout is readable by design: pr
 def move_service_suite(path: Path) -> Path:
     """The week4 suite cut down to the /move_service checks and the node that serves them."""
     suite = yaml.safe_load(SUITE.read_text())
-    suite.update(suite="week4_move_only", nodes=["move_server.py"],
+    suite.update(suite="week4_move_only",
                  services=[service for service in suite["services"] if service["name"] == "/move_service"],
                  checks=[item for item in suite["checks"] if item["service"] == "/move_service"])
     path.write_text(yaml.safe_dump(suite))
@@ -88,7 +88,7 @@ class SleeperWatch(threading.Thread):
 
 def report(out, student):
     """The JSON line a hostile node printed in its log (hostile_code.REPORT_PREFIX)."""
-    for line in (out / student / "node-move_server.py.log").read_text(errors="replace").splitlines():
+    for line in (out / student / "node-1-move_server.py.log").read_text(errors="replace").splitlines():
         if line.startswith(REPORT_PREFIX):
             return json.loads(line[len(REPORT_PREFIX):])
     raise AssertionError("{} printed no report".format(student))
@@ -199,7 +199,7 @@ def test_a_snooper_reads_no_other_submission_and_writes_nothing_outside_its_work
 @pytest.mark.slow
 def test_megabytes_of_output_are_capped_in_the_logs_and_the_checks_still_run(hostile):
     folder = hostile["out"] / "prints_megabytes"
-    log = folder / "node-move_server.py.log"
+    log = folder / "node-1-move_server.py.log"
     cap = STUDENT_LIMITS.output_bytes
     assert log.stat().st_size <= cap
     assert TRUNCATED_MARKER.format(cap).strip() in log.read_text(errors="replace")

@@ -5,21 +5,28 @@ every service found by name. Then, on the same master and simulator, the referen
 deliberately wrong student-like nodes written here (never in the repository): a /move_service that drives
 backwards, a /timed_move_service whose callback never returns, and an approach service under another name
 (/my_approach) and another package's type (com2009_msgs/Approach): the move check fails naming the direction,
-the timed checks are errors "no reply within", and the approach service is found by type.
+the timed checks are errors "no reply within", and the approach service is found by type. Last, a move server that
+fakes its own motion (pauses physics, publishes its own /clock and /odom of a 0.5 m drive, replies True, unpauses)
+gets "interference" naming what it did, while its honest reply to False still passes.
 
 Not marked realtime: the checks judge in sim time, and the reference approach pairs its sweeps with odometry by
 stamp. test_grade_class grades the same reference servers with the same checks at the same factor beside the rest
 of the suite in every run, and gives them full marks.
 """
 import json
+import shutil
 import subprocess
 import sys
+import tempfile
 import textwrap
 import time
+from pathlib import Path
 
 import pytest
 
 from roslab import stop_together, wait_for_service, wait_for_service_gone
+
+from .test_grade_hostile import move_service_suite as move_only_suite
 
 pytestmark = pytest.mark.slow
 
@@ -87,18 +94,24 @@ rospy.spin()
 
 @pytest.fixture(scope="module")
 def reference(ros_master):
-    """tb3_sim in the approach arena and the three reference servers."""
+    """tb3_sim in the approach arena (serving its ground truth on a private socket) and the three reference
+    servers. The socket's path is short (a Unix socket path has at most 107 bytes): a folder of its own in /tmp."""
+    folder = Path(tempfile.mkdtemp(prefix="truth-", dir="/tmp"))
+    ros_master.truth_socket = folder / "truth.sock"
     ros_master.roslaunch("week4_services", "week4_demo.launch", "gui:=false",
-                         "real_time_factor:=" + REAL_TIME_FACTOR)
+                         "real_time_factor:=" + REAL_TIME_FACTOR, "ground_truth_socket:={}".format(
+                             ros_master.truth_socket))
     for name in COURSE_SERVICES + ("/gazebo/reset_world",):
         wait_for_service(ros_master.uri, name, timeout_s=60)
-    return ros_master
+    yield ros_master
+    shutil.rmtree(folder, ignore_errors=True)
 
 
-def run_checks(ros_master, out, *extra):
+def run_checks(ros_master, out, *extra, suite="week4"):
     """Run the grader's check runner; returns (results, its output, wall seconds)."""
     started = time.monotonic()
-    finished = subprocess.run(["rosrun", "lab_grader", "run_checks", "--suite", "week4", "--out", str(out), *extra],
+    finished = subprocess.run(["rosrun", "lab_grader", "run_checks", "--suite", str(suite), "--out", str(out),
+                               "--ground-truth", str(ros_master.truth_socket), *extra],
                               env=ros_master.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                               timeout=RUN_TIMEOUT_WALL_S)
     elapsed = time.monotonic() - started
@@ -131,25 +144,38 @@ def test_the_reference_servers_pass_every_check(reference, tmp_path):
     assert checks["approach_distance_nan"]["evidence"]["request"]["approach_distance"] == "nan"
 
 
-@pytest.fixture
-def wrong_servers(reference, tmp_path):
-    """The reference servers stopped; the wrong ones started with the venv's python against the same master and
-    simulator, and stopped at the end (the fixture's teardown, even when the test fails)."""
+def start_scripts(ros_master, folder, scripts, services):
+    """Start each (label, code) of `scripts` with the venv's python; wait for `services`; returns the processes."""
+    processes = []
+    for label, code in scripts:
+        script = folder / (label + ".py")
+        script.write_text(textwrap.dedent(code))
+        processes.append(ros_master.start([sys.executable, str(script)], label))
+    for name in services:
+        wait_for_service(ros_master.uri, name, timeout_s=30)
+    return processes
+
+
+@pytest.fixture(scope="module")
+def reference_stopped(reference):
+    """The reference servers stopped (the tests below start their own, each stopping them at its end)."""
     subprocess.run(["rosnode", "kill", *REFERENCE_SERVERS], env=reference.env, check=True, timeout=30,
                    stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT)
     for name in COURSE_SERVICES:
         wait_for_service_gone(reference.uri, name, timeout_s=30)
-    processes = []
-    for label, code in (("backwards_move_server", BACKWARDS_MOVE_SERVER),
-                        ("hung_timed_move_server", NEVER_REPLYING_TIMED_SERVER),
-                        ("my_approach_server", RENAMED_APPROACH_SERVER)):
-        script = tmp_path / (label + ".py")
-        script.write_text(textwrap.dedent(code))
-        processes.append(reference.start([sys.executable, str(script)], label))
+    return reference
+
+
+@pytest.fixture
+def wrong_servers(reference_stopped, tmp_path):
+    """The wrong servers started against the same master and simulator, and stopped at the end (the fixture's
+    teardown, even when the test fails)."""
+    processes = start_scripts(reference_stopped, tmp_path, (("backwards_move_server", BACKWARDS_MOVE_SERVER),
+                                                            ("hung_timed_move_server", NEVER_REPLYING_TIMED_SERVER),
+                                                            ("my_approach_server", RENAMED_APPROACH_SERVER)),
+                              ("/move_service", "/timed_move_service", "/my_approach"))
     try:
-        for name in ("/move_service", "/timed_move_service", "/my_approach"):
-            wait_for_service(reference.uri, name, timeout_s=30)
-        yield reference
+        yield reference_stopped
     finally:
         stop_together(processes)
 
@@ -181,4 +207,65 @@ def test_wrong_servers_fail_error_and_are_found_by_type(wrong_servers, tmp_path)
     refusals = [check for check in results["checks"] if check["id"].startswith("approach_")
                 and check["id"] != "approach_stops_at_distance"]
     assert [check["verdict"] for check in refusals] == ["pass"] * 7
-    assert results["score"] == 6 + 7 * 2 and results["max_score"] == 100 and results["complete"] is True
+    assert {check["kind"] for check in refusals} == {"advice"}, "validation the Week 4 page does not ask for"
+    assert results["score"] == 6 and results["max_score"] == 100 and results["complete"] is True
+
+
+FAKING_MOVE_SERVER = """
+import time
+
+import rospy
+from nav_msgs.msg import Odometry
+from rosgraph_msgs.msg import Clock
+from std_srvs.srv import Empty
+from tuos_msgs.srv import SetBool, SetBoolResponse
+
+rospy.init_node("faking_move_server")
+clock = rospy.Publisher("/clock", Clock, queue_size=10)
+odom = rospy.Publisher("/odom", Odometry, queue_size=10)
+pause = rospy.ServiceProxy("/gazebo/pause_physics", Empty)
+unpause = rospy.ServiceProxy("/gazebo/unpause_physics", Empty)
+
+
+def callback(request):
+    if not request.request_signal:
+        return SetBoolResponse(False, "Send true to move.")
+    pause()
+    start = rospy.get_rostime()
+    for step in range(51):     # 5 s of a 0.1 m/s drive, in its own clock, while the real one stands still
+        now = start + rospy.Duration(0.1 * step)
+        clock.publish(Clock(clock=now))
+        fake = Odometry()
+        fake.header.stamp = now
+        fake.pose.pose.position.x = 0.01 * step
+        fake.pose.pose.orientation.w = 1.0
+        fake.twist.twist.linear.x = 0.1 if step < 50 else 0.0
+        odom.publish(fake)
+        time.sleep(0.02)
+    unpause()
+    return SetBoolResponse(True, "Request complete: the robot moved forwards for 5.0 seconds.")
+
+
+rospy.Service("/move_service", SetBool, callback)
+rospy.spin()
+"""
+
+
+def test_a_server_that_fakes_its_motion_gets_interference_and_its_honest_reply_passes(reference_stopped, tmp_path):
+    suite = move_only_suite(tmp_path / "move_only.yaml")
+    processes = start_scripts(reference_stopped, tmp_path, (("faking_move_server", FAKING_MOVE_SERVER),),
+                              ("/move_service",))
+    try:
+        results, output, elapsed = run_checks(reference_stopped, tmp_path / "r.json", suite=suite)
+    finally:
+        stop_together(processes)
+    print("faking-server run: {:.1f} s wall".format(elapsed))
+    checks = by_id(results)
+    move = checks["move_true"]
+    assert move["verdict"] == "interference", output
+    for what in ("physics was paused", "called /gazebo/pause_physics", "called /gazebo/unpause_physics",
+                 "published /clock (node /faking_move_server)", "published /odom (node /faking_move_server)"):
+        assert what in move["reason"], move["reason"]
+    assert abs(move["evidence"]["motion"]["forward_m"]) < 0.01, "the robot never moved: the truth says so"
+    assert checks["move_false"]["verdict"] == "pass", checks["move_false"]["reason"]
+    assert results["score"] == 6

@@ -1,5 +1,5 @@
 """The motion timeline of a graded call, from scripted odometry: forwards, backwards, turning, a wrong duration, a
-robot that never stops, a start pose that is not the origin; trajectory thinning; the front LiDAR distance."""
+robot that never stops, a start pose that is not the origin; and trajectory thinning."""
 import math
 
 import pytest
@@ -8,7 +8,6 @@ from lab_grader.checks.motion import (
     MAX_TRAJECTORY_POINTS,
     MotionError,
     Sample,
-    front_distance,
     summarize,
     thin,
 )
@@ -149,33 +148,3 @@ def test_thin_keeps_at_most_400_points_with_first_and_last_and_times_since_the_r
 def test_thin_keeps_short_recordings_whole():
     samples = drive([(1.0, 0.1, 0)])
     assert len(thin(samples, 100.0)) == len(samples)
-
-
-def scan(front, side=2.0, count=360):
-    """A 360-beam sweep (index 0 straight ahead, CCW) seeing `front` within +-10 beams and `side` elsewhere."""
-    ranges = [side] * count
-    for i in list(range(0, 11)) + list(range(count - 10, count)):
-        ranges[i] = front
-    return ranges
-
-
-def test_front_distance_is_the_minimum_within_20_degrees():
-    ranges = scan(0.4)
-    ranges[15] = 0.35     # 15 degrees left: counts
-    ranges[25] = 0.2      # 25 degrees left: outside the arc
-    ranges[340] = 0.3     # -20 degrees: on the edge, counts
-    assert front_distance(ranges, 0.0, math.radians(1.0), 0.12) == pytest.approx(0.3)
-
-
-def test_front_distance_ignores_inf_nan_and_readings_below_range_min():
-    ranges = scan(math.inf)
-    ranges[0], ranges[1], ranges[2] = math.nan, 0.05, 0.9
-    assert front_distance(ranges, 0.0, math.radians(1.0), 0.12) == pytest.approx(0.9)
-    assert front_distance(scan(math.inf, side=math.inf), 0.0, math.radians(1.0), 0.12) is None
-
-
-def test_front_distance_with_a_scan_starting_behind_the_robot():
-    """angle_min = -pi: straight ahead is the middle of the array."""
-    ranges = [2.0] * 360
-    ranges[180] = 0.5
-    assert front_distance(ranges, -math.pi, math.radians(1.0), 0.12) == pytest.approx(0.5)

@@ -14,8 +14,7 @@ SUITES_DIR = Path(__file__).resolve().parents[3] / "catkin_ws/src/tools/lab_grad
 VALID = {
     "suite": "demo",
     "world": "approach_arena",
-    "services": [{"name": "/move_service", "type": "tuos_msgs/SetBool"}],
-    "nodes": ["move_server.py"],
+    "services": [{"name": "/move_service", "type": "tuos_msgs/SetBool", "node": "move_server.py"}],
     "checks": [{
         "id": "move_true", "title": "moves", "weight": 10, "service": "/move_service",
         "request": {"request_signal": True},
@@ -39,18 +38,30 @@ def mutated(change):
     return data
 
 
-def test_the_shipped_week4_suite_loads_with_17_checks_worth_100_points():
+def test_the_shipped_week4_suite_loads_with_17_checks_worth_100_points_of_which_7_are_advice():
     suite = load_suite(SUITES_DIR / "week4.yaml")
     assert suite.name == "week4" and suite.world == "approach_arena" and suite.max_score == 100
     assert suite.nodes == ("move_server.py", "timed_move_server.py", "approach_server.py")
+    exercises = suite.exercises()
+    assert [(exercise.node, [spec.name for spec in exercise.services], len(exercise.check_ids))
+            for exercise in exercises] == [("move_server.py", ["/move_service"], 2),
+                                           ("timed_move_server.py", ["/timed_move_service"], 7),
+                                           ("approach_server.py", ["/approach_service"], 8)]
     assert [service.name for service in suite.services] == ["/move_service", "/timed_move_service",
                                                             "/approach_service"]
     assert len(suite.checks) == 17 and sum(check.weight for check in suite.checks) == 100
     assert len({check.id for check in suite.checks}) == 17
+    advice = [check for check in suite.checks if check.kind == "advice"]
+    assert len(advice) == 7 and {check.weight for check in advice} == {0}
+    assert all(check.id.startswith(("approach_velocity", "approach_distance")) for check in advice)
     move = suite.checks[0]
-    assert move.id == "move_true" and move.timeout_s == 15.0
-    assert move.expect.motion.forward_m == Range(0.4, 0.6)
-    assert move.expect.motion.duration_s == Range(4.5, 5.5)
+    assert move.id == "move_true" and move.timeout_s == 15.0 and move.kind == "required"
+    # the course template's whole-second timing: a 5 s request moves for 4..5 s (and 0.1 m/s of it)
+    assert move.expect.motion.forward_m == Range(0.35, 0.6)
+    assert move.expect.motion.duration_s == Range(4.0, 5.5)
+    assert "4..5.5 s" in move.title
+    timed = next(c for c in suite.checks if c.id == "timed_left")
+    assert timed.expect.motion.duration_s == Range(2.0, 3.5) and "2..3.5 s" in timed.title
     nan_check = next(check for check in suite.checks if check.id == "approach_distance_nan")
     assert math.isnan(nan_check.request["approach_distance"])
     assert next(c for c in suite.checks if c.id == "timed_fwd").timeout_s == 10.0    # the suite's default
@@ -124,8 +135,9 @@ MOTION = CHECK + ("expect", "motion")
     (_set(("services", 0, "wait"), 3), "services[0].wait", "unknown key"),
     (_set(("services", 0, "wait_s"), float("nan")), "services[0].wait_s", "finite number"),
     (_duplicate_service, "services[1].name", "listed twice"),
-    (_set(("nodes", 0), "src/move_server.py"), "nodes[0]", "a file name"),
-    (_set(("nodes", 0), {"executable": "move_server.py"}), "nodes[0]", "non-empty string"),
+    (_set(("services", 0, "node"), "src/move_server.py"), "services[0].node", "a file name"),
+    (_set(("services", 0, "node"), {"executable": "move_server.py"}), "services[0].node", "non-empty string"),
+    (_delete(("services", 0, "node")), "services[0].node", "missing"),
     (_set(("real_time_factor",), 0), "real_time_factor", "must be > 0"),
     (_set(("checks",), "all"), "checks", "non-empty list"),
     (_delete(CHECK + ("id",)), "checks[0].id", "missing"),
@@ -133,6 +145,8 @@ MOTION = CHECK + ("expect", "motion")
     (_duplicate_check, "checks[1].id", "used twice"),
     (_delete(CHECK + ("title",)), "checks[0].title", "missing"),
     (_set(CHECK + ("weight",), -2), "checks[0].weight", "must be >= 0"),
+    (_delete(CHECK + ("weight",)), "checks[0].weight", "missing"),
+    (_set(CHECK + ("kind",), "optional"), "checks[0].kind", "expected one of required, advice"),
     (_set(CHECK + ("wieght",), 2), "checks[0].wieght", "unknown key"),
     (_set(CHECK + ("service",), "/timed_move_service"), "checks[0].service", "not one of the suite's services"),
     (_set(CHECK + ("timeout_s",), -5), "checks[0].timeout_s", "must be > 0"),
@@ -198,3 +212,12 @@ def test_names_resolve_in_the_suites_folder_and_paths_are_paths(tmp_path):
         resolve_suite("week9", SUITES_DIR)
     with pytest.raises(SuiteError, match="no such suite file"):
         resolve_suite(str(tmp_path / "nope.yaml"), SUITES_DIR)
+
+
+def test_an_advice_check_weighs_nothing_unless_given_a_weight(tmp_path):
+    data = copy.deepcopy(VALID)
+    check = data["checks"][0]
+    del check["weight"]
+    check["kind"] = "advice"
+    suite = load_suite(write(tmp_path, data))
+    assert suite.checks[0].kind == "advice" and suite.checks[0].weight == 0 and suite.max_score == 0

@@ -6,7 +6,7 @@ import pytest
 
 class FakeSim:
     """What GazeboApi and BoxTool need from the ROS node, without ROS: the world behind a (trivial) lock, the
-    pause flag, resets, and a count of teleports."""
+    pause flag, resets, a count of teleports and the world changes reported for the ground-truth channel."""
 
     rendering_enabled = False
 
@@ -14,6 +14,7 @@ class FakeSim:
         self.world = world
         self.paused = False
         self.teleports = 0
+        self.changes = []
 
     @contextmanager
     def locked_world(self):
@@ -21,6 +22,9 @@ class FakeSim:
 
     def teleported(self):
         self.teleports += 1
+
+    def world_changed(self, what, detail=""):
+        self.changes.append((what, detail))
 
     def pause(self):
         self.paused = True

@@ -2,22 +2,26 @@
 
 The order is a marker's: copy the package into a fresh catkin workspace, `chmod +x` its Python files (as the course
 tells students to), build it with catkin_make on top of the lab, start roscore and, when the suite has a world,
-tb3_sim (trusted, in the box's own loopback-only network), start the student's nodes the way the course says
-(`rosrun <package> <file>`), then run the suite's checks (what `rosrun lab_grader run_checks` runs, as
-`python3 -m lab_grader.checks.runner`: trusted, so rosrun's package search, four catkin_find runs, is not needed)
-and read their JSON. A build that fails, a node that is missing or dies, a check runner that overruns: each is
-recorded with its evidence (the tail of the log) and the submission gets the checks' verdicts as far as they got;
-the batch goes on.
+tb3_sim (trusted, in the box's own loopback-only network, serving its ground truth on a private socket in the box's
+root-only folder, which the student's processes cannot see: lab_grader.checks.ground_truth), start the student's
+nodes the way the course says (`rosrun <package> <file>`), then run the suite's checks (what `rosrun lab_grader
+run_checks` runs, as `python3 -m lab_grader.checks.runner`: trusted, so rosrun's package search, four catkin_find
+runs, is not needed) and read their JSON. A build that fails, a node that is missing or dies, a check runner that
+overruns: each is recorded with its evidence (the tail of the log) and the submission gets the checks' verdicts as
+far as they got; the batch goes on.
 
 Logs are written by the grader outside the student's workspace, under the submission's output folder.
 """
 import json
 import os
+import re
 import time
 from pathlib import Path
-from typing import Dict, List, NamedTuple, Optional
+from typing import Dict, List, Optional
 
+from lab_grader.checks.verdicts import CRASHED, ERROR, PASS, CheckResult, Verdict, one_line, tidy
 from lab_grader.html_report import report_html
+from lab_grader.node_logs import build_errors, traceback_of
 from lab_grader.sandbox import STUDENT_UID_BASE, Limits, SubmissionSandbox
 from lab_grader.submissions import read_package_name
 
@@ -26,20 +30,17 @@ SIMULATOR_START_S = 60.0
 SIMULATOR_READY_SERVICE = "/gazebo/reset_world"
 MASTER_READY_SERVICE = "/rosout/get_loggers"    # roscore's rosout node is up: the master answers
 CHECKS_TIMEOUT_S = 600.0
+TRY_SCRIPT_S = 60.0            # a script tried for an exercise must offer its service (or action) within this ...
+NODE_UP_GRACE_S = 5.0          # ... or within this once it has called init_node
+POLL_S = 0.2                   # how often the grader looks at a node, the check runner and find_server
+SCRIPT_SCAN_BYTES = 256 * 1024  # a script is a node when init_node appears this early in it
 LOG_TAIL_CHARS = 3000
+BUILD_LOG_CHARS = 200000       # how much of the build log is searched for catkin's error lines
 ROS_PORT = 11311
+GROUND_TRUTH_SOCKET = "truth.sock"     # in the box's trusted folder (a Unix socket path must be short)
 RESULT_FILE = "result.json"
 REPORT_FILE = "report.html"
-CHECKS_FILE = "checks.json"
 STUDENT_LIMITS = Limits(cpu_s=600, processes=512, output_bytes=1024 * 1024, wall_s=BUILD_TIMEOUT_S)
-
-
-class NodeStart(NamedTuple):
-    """How one node the suite needs was started: `rosrun package file`, or why it could not be."""
-
-    file: str
-    package: Optional[str]
-    problem: Optional[str]
 
 
 def log_tail(path: Path, chars=LOG_TAIL_CHARS) -> str:
@@ -61,6 +62,29 @@ def find_node(submission, file_name: str):
             if candidate.is_file() and "build" not in candidate.relative_to(package_dir).parts[:1]:
                 return read_package_name(submission.student_id, package_xml, source_dir), candidate
     return None
+
+
+def node_candidates(submission, course_name: str):
+    """[(package name, path)] of every script in the submission's packages that starts a ROS node (a .py file that
+    calls init_node, not setup.py or __init__.py), those sharing a word with `course_name` first
+    (approach_object_server.py for approach_server.py), then by path."""
+    source_dir = Path(submission.source_dir)
+    words = set(re.findall(r"[a-z0-9]+", course_name.lower())) - {"py", "server", "node"}
+    found = []
+    for package_xml in sorted(source_dir.rglob("package.xml")):
+        package_dir = package_xml.parent
+        package = None
+        for path in sorted(package_dir.rglob("*.py")):
+            if (path.name in ("setup.py", "__init__.py") or path.is_symlink() or not path.is_file()
+                    or "build" in path.relative_to(package_dir).parts[:1]):
+                continue
+            with open(path, "rb") as source:
+                if b"init_node" not in source.read(SCRIPT_SCAN_BYTES):
+                    continue
+            package = package or read_package_name(submission.student_id, package_xml, source_dir)
+            found.append((package, path))
+    return sorted(found, key=lambda item: (not words & set(re.findall(r"[a-z0-9]+", item[1].name.lower())),
+                                           str(item[1])))
 
 
 def ros_environment(base_env: Dict[str, str]) -> Dict[str, str]:
@@ -131,17 +155,20 @@ class SubmissionGrader:
         on_stage("building")
         build = box.run_student(["catkin_make"], env, out_dir / "build.log", timeout_s=BUILD_TIMEOUT_S)
         result["build"] = {"ok": build.ok, "stopped": build.stop_reason, "log_tail": None if build.ok
-                           else log_tail(out_dir / "build.log")}
+                           else log_tail(out_dir / "build.log"),
+                           "errors": [] if build.ok else build_errors(log_tail(out_dir / "build.log", BUILD_LOG_CHARS))}
         if not build.ok:
             result["problems"].append("the package does not build (catkin_make)")
             return
         on_stage("starting roscore" if self.suite.world is None else "starting the simulator")
+        truth_socket = box.trusted_dir / GROUND_TRUTH_SOCKET
         box.start_trusted(["roscore", "-p", str(ROS_PORT)], self.env, out_dir / "roscore.log")
         if self.suite.world is None:
             ready_service, startup_log, what = MASTER_READY_SERVICE, out_dir / "roscore.log", "roscore"
         else:
             box.start_trusted(["roslaunch", "--wait", "tb3_sim", "tb3_sim.launch", "gui:=false",
-                               "world:=" + self.suite.world, "real_time_factor:={:g}".format(self.real_time_factor)],
+                               "world:=" + self.suite.world, "real_time_factor:={:g}".format(self.real_time_factor),
+                               "ground_truth_socket:={}".format(truth_socket)],
                               self.env, out_dir / "simulator.log")
             ready_service, startup_log, what = SIMULATOR_READY_SERVICE, out_dir / "simulator.log", "the simulator"
         ready = box.run_trusted(["python3", "-m", "lab_grader.wait_service", ready_service, str(SIMULATOR_START_S)],
@@ -149,37 +176,136 @@ class SubmissionGrader:
         if not ready.ok:
             result["problems"].append("{} did not start: {}".format(what, log_tail(startup_log, 500)))
             return
-        on_stage("starting nodes")
-        nodes = []
-        for file_name in self.suite.nodes:
-            found = find_node(submission, file_name)
-            if found is None:
-                nodes.append(NodeStart(file_name, None, "no file named {} in the submission".format(file_name)))
+        parts = {}
+        exercises = self.suite.exercises()
+        for number, exercise in enumerate(exercises, start=1):
+            on_stage("exercise {}/{} ({}): finding its node".format(number, len(exercises), exercise.node))
+            node, server = self._start_server(box, submission, exercise, env, out_dir, number,
+                                              served=[node["file"] for node in result["nodes"] if node["file"]])
+            if server is None:
+                parts[exercise.node] = not_run(self.suite, exercise, node)
+                result["nodes"].append(node)
                 continue
-            package, _ = found
-            log = out_dir / "node-{}.log".format(file_name)
-            process = box.start_student(overlay("exec rosrun {} {}".format(package, file_name)), env, log)
-            nodes.append((NodeStart(file_name, package, None), process, log))
-        # No pause for the nodes to start: the check runner waits for each service itself (the suite's wait_s).
-        checks_log = out_dir / "checks.log"
-        on_stage("checks", checks_log)
-        run = box.run_trusted(["python3", "-m", "lab_grader.checks.runner", "--suite", str(self.suite.path),
-                               "--out", str(out_dir / CHECKS_FILE)], self.env, checks_log, timeout_s=CHECKS_TIMEOUT_S)
-        for entry in nodes:
-            if isinstance(entry, NodeStart):
-                result["nodes"].append(entry._asdict())
+            checks_log = out_dir / "checks-{}.log".format(number)
+            on_stage("exercise {}/{} ({}): checks".format(number, len(exercises), exercise.node), checks_log)
+            checks_file = out_dir / "checks-{}.json".format(number)
+            runner = box.start_trusted(["python3", "-m", "lab_grader.checks.runner", "--suite", str(self.suite.path),
+                                        "--exercise", exercise.node, "--out", str(checks_file),
+                                        "--ground-truth", str(truth_socket)], self.env, checks_log)
+            run = watch_checks(runner, server)
+            crashed = not server.running()
+            node.update(running_at_end=not crashed, **(crash_report(server.log_path) if crashed else {}))
+            server.stop()
+            result["nodes"].append(node)
+            checks = read_json(checks_file)
+            if checks is None:
+                result["problems"].append("the checks of {} did not finish ({}): {}".format(
+                    exercise.node, run.stop_reason or "exit {}".format(run.returncode), log_tail(checks_log, 500)))
+                parts[exercise.node] = not_run(self.suite, exercise, node, "the checks did not finish")
                 continue
-            start, process, log = entry
-            died = not process.running()
-            result["nodes"].append(dict(start._asdict(), running_at_end=not died,
-                                        log_tail=log_tail(log) if died else None))
-        checks = read_json(out_dir / CHECKS_FILE)
-        if checks is None:
-            result["problems"].append("the checks did not finish ({}): {}".format(
-                run.stop_reason or "exit {}".format(run.returncode), log_tail(checks_log, 500)))
-            return
-        result.update(checks=checks["checks"], services=checks["services"], score=checks["score"],
-                      max_score=checks["max_score"])
+            parts[exercise.node] = checks_as_crashed(checks, node) if crashed else checks
+        result.update(combine(self.suite, parts))
+
+    def _start_server(self, box, submission, exercise, env, out_dir, number, served=()):
+        """Start the node that serves `exercise`, alone: the course's file when the submission has one (the check
+        runner then finds its services itself, and watch_checks notices if it dies), else each of its scripts in
+        turn (a file named like the course's first, the `served` files, which served earlier exercises, last) until
+        one offers the exercise's service or action by type (lab_grader.find_server). Returns (the node's record for
+        the report, its SandboxProcess or None)."""
+        specs = (["service:{}:{}".format(spec.name, spec.type) for spec in exercise.services]
+                 + ["action:{}:{}".format(spec.name, spec.type) for spec in exercise.actions])
+        node = {"exercise": exercise.node, "serves": [spec.name for spec in exercise.services + exercise.actions],
+                "file": None, "package": None, "found_by": None, "tried": [], "running_at_end": False,
+                "problem": None, "crashed": False, "traceback": None, "log_tail": None}
+
+        def start(package, path):
+            relative = str(path.relative_to(submission.source_dir))
+            node["tried"].append(relative)
+            node.update(file=relative, package=package)
+            log = out_dir / "node-{}-{}.log".format(number, path.name)
+            return box.start_student(overlay("exec rosrun {} {}".format(package, path.name)), env, log), log
+
+        course = find_node(submission, exercise.node)
+        if course is not None:
+            node["found_by"] = "the course's file name"
+            return node, start(*course)[0]
+        candidates = sorted(node_candidates(submission, exercise.node),
+                            key=lambda candidate: str(candidate[1].relative_to(submission.source_dir)) in served)
+        for package, path in candidates:
+            process, log = start(package, path)
+            finder = box.start_trusted(["python3", "-m", "lab_grader.find_server", "--any", "--timeout",
+                                        "{:g}".format(TRY_SCRIPT_S), "--give-up", "{:g}".format(NODE_UP_GRACE_S)]
+                                       + specs, self.env,
+                                       out_dir / "find-{}.log".format(number))
+            while finder.running() and process.running():
+                time.sleep(POLL_S)
+            offered = process.running() and finder.wait(POLL_S).returncode == 0
+            finder.kill()
+            if offered:
+                node["found_by"] = "found by trying each script"
+                return node, process
+            if not process.running():
+                node["tried"][-1] += " (exited: {})".format(crash_report(log)["crash"])
+            process.stop()
+        node.update(file=None, package=None, problem=(
+            "no file named {}, and none of the {} scripts tried offers {}".format(
+                exercise.node, len(candidates), " or ".join(specs)) if candidates
+            else "no file named {} and no other script in the submission".format(exercise.node)))
+        return node, None
+
+
+def watch_checks(runner, server):
+    """Wait for the check runner `runner` (a SandboxProcess) to end, at most CHECKS_TIMEOUT_S; if the student's
+    node `server` exits meanwhile, stop the runner at once (SIGINT: it writes the results it has, the rest "not
+    run"). Returns the runner's RunResult."""
+    deadline = time.monotonic() + CHECKS_TIMEOUT_S
+    while runner.running() and time.monotonic() < deadline:
+        if not server.running():
+            return runner.stop()
+        time.sleep(POLL_S)
+    return runner.wait(0)
+
+
+def crash_report(log_path):
+    """The node-record fields of a node that exited: crashed, the last traceback line (crash), the traceback and
+    the log's end."""
+    text = log_tail(log_path)
+    last, traceback = traceback_of(text)
+    return {"crashed": True, "crash": last or "it exited (no traceback in its log)", "traceback": traceback,
+            "log_tail": text}
+
+
+def not_run(suite, exercise, node, why=None):
+    """The results of an exercise whose checks could not run: crashed when its node died, else error."""
+    checks = [check for check in suite.checks if check.id in exercise.check_ids]
+    if node.get("crashed"):
+        verdict = Verdict.crashed("the node {} exited: {}".format(node["file"], node["crash"]))
+    else:
+        verdict = Verdict.errored("not run: {}".format(why or node["problem"]))
+    return {"services": {spec.name: {"expected_type": spec.type, "found": None, "found_by": None, "found_type": None,
+                                     "note": node["problem"] or why} for spec in exercise.services + exercise.actions},
+            "checks": [CheckResult(check.id, check.title, check.weight, verdict, check.kind).as_json()
+                       for check in checks]}
+
+
+def checks_as_crashed(checks, node):
+    """`checks` (one exercise's results) with every error verdict turned into crashed: its node exited meanwhile."""
+    reason = "the node {} exited: {}".format(node["file"], node["crash"])
+    changed = [dict(check, verdict=CRASHED, reason=one_line(reason if check["reason"].startswith("not run")
+                                                            else "{} ({})".format(reason, check["reason"])))
+               if check["verdict"] == ERROR else check for check in checks["checks"]]
+    return dict(checks, checks=changed)
+
+
+def combine(suite, parts):
+    """One results document's services, checks (in the suite's order), score and max_score from the exercises'."""
+    services, by_id = {}, {}
+    for part in parts.values():
+        services.update(part["services"])
+        by_id.update((check["id"], check) for check in part["checks"])
+    checks = [by_id[check.id] for check in suite.checks if check.id in by_id]
+    points = sum(check["weight"] for check in checks if check["verdict"] == PASS)
+    return {"services": services, "checks": checks, "score": tidy(points), "max_score": suite.max_score}
 
 
 def write_json(path: Path, content) -> None:

@@ -233,10 +233,16 @@ class SubmissionSandbox:
                 os.lchown(name, self.uid, self.gid)
         return dest
 
+    @property
+    def trusted_dir(self) -> Path:
+        """A root-only folder of this box (mode 0700, under the work root that bwrap hides from student processes),
+        removed by close(): for the trusted processes' ROS logs and private sockets."""
+        return self._box_dir / TRUSTED_ROS_HOME
+
     def trusted_env(self, env: Dict[str, str]) -> Dict[str, str]:
         """`env` with ROS_HOME and ROS_LOG_DIR in a root-only folder of this box, removed by close(): roscore's
         rosout.log holds every log line of the student's nodes, which must not pile up in root's ~/.ros."""
-        ros_home = self._box_dir / TRUSTED_ROS_HOME
+        ros_home = self.trusted_dir
         return dict(env, ROS_HOME=str(ros_home), ROS_LOG_DIR=str(ros_home / "log"))
 
     def start_trusted(self, argv: Sequence[str], env: Dict[str, str], log_path: Path,

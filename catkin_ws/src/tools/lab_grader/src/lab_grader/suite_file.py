@@ -21,17 +21,22 @@ The format (suites/week4.yaml is the worked example, with a comment on every key
     services:                         # what the course asks the student to serve
       - name: /move_service           # the name the course asks for (absolute)
         type: tuos_msgs/SetBool       # its type; another type with the same md5sum is accepted by type
+        node: move_server.py          # the file the course has the student write and start (rosrun <package>
+                                      #   move_server.py); the services and actions of one file make one
+                                      #   exercise, whose node the grader runs alone during its checks
         wait_s: 30                    # optional (30): wall s to wait for it to appear on the master
     actions:                          # optional: actionlib servers the course asks for
       - name: /my_action_server       # the action namespace the course asks for (absolute)
         type: beginner_tutorials/counter  # the action type; another package's <Name>Action (the same name) is
-        wait_s: 30                    #   accepted by type
-    nodes:                            # what the course has the student start (for the orchestrator): the file
-      - move_server.py                #   names the course uses (rosrun <package> move_server.py)
+        node: counter_server.py       #   accepted by type
+        wait_s: 30
     checks:
       - id: move_true                 # unique; lower case, digits and _
-        title: ...                    # one line for the report
-        weight: 16                    # points (>= 0) a pass is worth
+        title: ...                    # one line for the report: what is asked and the tolerance allowed
+        kind: required                # optional (required): what the course page asks; `advice`: robustness
+                                      #   beyond the page, reported but worth 0 points unless given a weight
+        weight: 16                    # points (>= 0) a pass is worth; required for a required check, 0 by
+                                      #   default for advice
         service: /move_service        # one of services[].name (or `action:`, see below)
         request: {request_signal: true}   # request fields (bool, int, float incl. .nan, str)
         timeout_s: 15                 # optional (suite's timeout_s): sim s to wait for the reply
@@ -88,10 +93,13 @@ SERVICE_NAME = re.compile(r"^(/[A-Za-z][A-Za-z0-9_]*)+$")
 FILE_NAME = re.compile(r"^[A-Za-z0-9_.+-]+$")
 TYPE_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*/[A-Za-z][A-Za-z0-9_]*$")
 SUITE_KEYS = ("suite", "title", "world", "real_time_factor", "settle_s", "timeout_s", "still_timeout_s",
-              "by_type_grace_s", "services", "actions", "nodes", "checks")
-SERVICE_KEYS = ("name", "type", "wait_s")
-SERVICE_CHECK_KEYS = ("id", "title", "weight", "service", "request", "timeout_s", "expect")
-ACTION_CHECK_KEYS = ("id", "title", "weight", "action", "goal", "cancel_after_s", "timeout_s", "expect")
+              "by_type_grace_s", "services", "actions", "checks")
+SERVICE_KEYS = ("name", "type", "node", "wait_s")
+SERVICE_CHECK_KEYS = ("id", "title", "kind", "weight", "service", "request", "timeout_s", "expect")
+ACTION_CHECK_KEYS = ("id", "title", "kind", "weight", "action", "goal", "cancel_after_s", "timeout_s", "expect")
+REQUIRED = "required"
+ADVICE = "advice"
+CHECK_KINDS = (REQUIRED, ADVICE)
 EXPECT_KEYS = ("reply", "reply_matches", "refused", "motion", "front_distance_m")
 ACTION_EXPECT_KEYS = ("state", "result", "result_matches", "feedback", "duration_s", "cancel_to_end_s")
 GOAL_STATES = ("PENDING", "ACTIVE", "PREEMPTED", "SUCCEEDED", "ABORTED", "REJECTED", "PREEMPTING", "RECALLING",
@@ -151,9 +159,22 @@ class ActionExpectation(NamedTuple):
 
 
 class ServiceSpec(NamedTuple):
+    """A service (or action) the course asks for: its name, type, the course's file that serves it, and how long
+    (wall s) to wait for it on the master."""
+
     name: str
     type: str
     wait_s: float
+    node: str
+
+
+class Exercise(NamedTuple):
+    """The services and actions one course file serves (suite order), and the ids of the checks that call them."""
+
+    node: str
+    services: Tuple[ServiceSpec, ...]
+    actions: Tuple[ServiceSpec, ...]
+    check_ids: Tuple[str, ...]
 
 
 class CheckSpec(NamedTuple):
@@ -170,6 +191,7 @@ class CheckSpec(NamedTuple):
     action: Optional[str] = None
     goal: Optional[Dict[str, Any]] = None
     cancel_after_s: Optional[float] = None
+    kind: str = REQUIRED
 
 
 class Suite(NamedTuple):
@@ -182,9 +204,22 @@ class Suite(NamedTuple):
     still_timeout_s: float
     by_type_grace_s: float
     services: Tuple[ServiceSpec, ...]
-    nodes: Tuple[str, ...]
     checks: Tuple[CheckSpec, ...]
     actions: Tuple[ServiceSpec, ...] = ()
+
+    @property
+    def nodes(self):
+        """The course's file names, each once, in the order the suite lists their services and actions."""
+        return tuple(dict.fromkeys(spec.node for spec in self.services + self.actions))
+
+    def exercises(self) -> Tuple[Exercise, ...]:
+        """One Exercise per course file, in the suite's order."""
+        return tuple(Exercise(node, tuple(spec for spec in self.services if spec.node == node),
+                              tuple(spec for spec in self.actions if spec.node == node),
+                              tuple(check.id for check in self.checks
+                                    if any(spec.node == node and spec.name in (check.service, check.action)
+                                           for spec in self.services + self.actions)))
+                     for node in self.nodes)
 
     @property
     def max_score(self):
@@ -262,6 +297,11 @@ class _Converters:
             self.fail(where, "expected a non-empty string, got {}".format(_show(value)))
         if pattern is not None and not pattern.match(value):
             self.fail(where, "{} is not {}".format(_show(value), what))
+        return value
+
+    def choice(self, value, where, choices):
+        if value not in choices:
+            self.fail(where, "expected one of {}, got {}".format(", ".join(choices), _show(value)))
         return value
 
     def boolean(self, value, where):
@@ -352,13 +392,12 @@ def parse_suite(data, path) -> Suite:
                       default=())
     if not services and not actions:
         top.fail("services", "missing (a suite needs services or actions)")
-    nodes = top.get("nodes", lambda v, w: _nodes(convert, v, w), default=())
     targets = _Targets([service.name for service in services], [action.name for action in actions], world)
     checks = top.get("checks", lambda v, w: _checks(convert, v, w, targets, default_timeout_s), required=True)
     return Suite(name=name, title=title, path=path, world=world, real_time_factor=real_time_factor,
                  settle_s=float(settle_s),
                  still_timeout_s=still_timeout_s, by_type_grace_s=float(by_type_grace_s), services=services,
-                 nodes=nodes, checks=checks, actions=actions)
+                 checks=checks, actions=actions)
 
 
 class _Targets(NamedTuple):
@@ -382,20 +421,12 @@ def _services(convert, value, where, what) -> Tuple[ServiceSpec, ...]:
         name = entry.get("name", lambda v, w: convert.text(v, w, SERVICE_NAME, "an absolute ROS name (/a/b)"),
                          required=True)
         srv_type = entry.get("type", lambda v, w: convert.text(v, w, TYPE_NAME, what), required=True)
+        node = entry.get("node", lambda v, w: convert.text(v, w, FILE_NAME, "a file name (no folders)"),
+                         required=True)
         wait_s = entry.get("wait_s", convert.non_negative, default=DEFAULT_WAIT_S)
         if any(service.name == name for service in result):
             convert.fail(entry.where("name"), "{} is listed twice".format(name))
-        result.append(ServiceSpec(name, srv_type, float(wait_s)))
-    return tuple(result)
-
-
-def _nodes(convert, value, where) -> Tuple[str, ...]:
-    result = []
-    for item_where, item in _items(convert, value, where):
-        name = convert.text(item, item_where, FILE_NAME, "a file name (no folders)")
-        if name in result:
-            convert.fail(item_where, "{} is listed twice".format(name))
-        result.append(name)
+        result.append(ServiceSpec(name, srv_type, float(wait_s), node))
     return tuple(result)
 
 
@@ -416,7 +447,8 @@ def _checks(convert, value, where, targets, default_timeout_s) -> Tuple[CheckSpe
         if any(check.id == check_id for check in result):
             convert.fail(entry.where("id"), "check id {} is used twice".format(check_id))
         title = entry.get("title", convert.text, required=True)
-        weight = entry.get("weight", convert.non_negative, required=True)
+        kind = entry.get("kind", lambda v, w: convert.choice(v, w, CHECK_KINDS), default=REQUIRED)
+        weight = entry.get("weight", convert.non_negative, required=kind == REQUIRED, default=0)
         timeout_s = float(entry.get("timeout_s", convert.positive, default=default_timeout_s))
         if is_action:
             action = entry.get("action", lambda v, w: _reference(convert, v, w, targets.actions, "actions"))
@@ -425,14 +457,15 @@ def _checks(convert, value, where, targets, default_timeout_s) -> Tuple[CheckSpe
             expect = entry.get("expect", lambda v, w: _action_expectation(convert, v, w),
                                default=_action_expectation(convert))
             result.append(CheckSpec(check_id, title, weight, None, None, timeout_s, expect, action=action, goal=goal,
-                                    cancel_after_s=None if cancel_after_s is None else float(cancel_after_s)))
+                                    cancel_after_s=None if cancel_after_s is None else float(cancel_after_s),
+                                    kind=kind))
             continue
         service = entry.get("service", lambda v, w: _reference(convert, v, w, targets.services, "services"),
                             required=True)
         request = entry.get("request", lambda v, w: convert.fields(v, w, convert.scalar), default={})
         expect = entry.get("expect", lambda v, w: _expectation(convert, v, w, targets.world),
                            default=_expectation(convert))
-        result.append(CheckSpec(check_id, title, weight, service, request, timeout_s, expect))
+        result.append(CheckSpec(check_id, title, weight, service, request, timeout_s, expect, kind=kind))
     return tuple(result)
 
 

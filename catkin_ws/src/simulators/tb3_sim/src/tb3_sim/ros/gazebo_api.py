@@ -150,18 +150,22 @@ class GazeboApi:
 
     def reset_world(self, _request):
         self._sim.reset_world()
+        self._sim.world_changed("reset_world")
         return EmptyResponse()
 
     def reset_simulation(self, _request):
         self._sim.reset_simulation()
+        self._sim.world_changed("reset_simulation")
         return EmptyResponse()
 
     def pause_physics(self, _request):
         self._sim.pause()
+        self._sim.world_changed("pause_physics")
         return EmptyResponse()
 
     def unpause_physics(self, _request):
         self._sim.unpause()
+        self._sim.world_changed("unpause_physics")
         return EmptyResponse()
 
     def spawn_sdf_model(self, request):
@@ -187,6 +191,7 @@ class GazeboApi:
                 self._sim.spawn_robot(name, spec.model, pose, request.robot_namespace)
         except SimError as error:
             return SpawnModelResponse(False, self._failed("SpawnModel", error))
+        self._sim.world_changed("spawn_model", name)
         rospy.loginfo(f"spawned '{name}' at ({pose.x:.3f}, {pose.y:.3f}, yaw {pose.yaw:.3f})")
         return SpawnModelResponse(True, SPAWNED)
 
@@ -196,6 +201,7 @@ class GazeboApi:
                 world.delete_model(request.model_name)
         except SimError as error:
             return DeleteModelResponse(False, self._failed("DeleteModel", error))
+        self._sim.world_changed("delete_model", request.model_name)
         return DeleteModelResponse(True, DELETED)
 
     def get_model_state(self, request):
@@ -231,6 +237,7 @@ class GazeboApi:
                 self._sim.teleported()
         except SimError as error:
             return SetModelStateResponse(False, self._failed("SetModelState", error))
+        self._sim.world_changed("set_model_state", state.model_name)
         return SetModelStateResponse(True, SET_MODEL_STATE)
 
     def on_model_state(self, message):
@@ -259,6 +266,7 @@ class GazeboApi:
             return SetPhysicsPropertiesResponse(False, self._failed("SetPhysicsProperties", error))
         self._ode_config = request.ode_config
         self._sim.set_physics_properties(properties)
+        self._sim.world_changed("set_physics_properties")
         rospy.loginfo(f"physics properties set: real-time factor {properties.real_time_factor:g}"
                       f"{' (as fast as possible)' if properties.real_time_factor == 0 else ''}")
         return SetPhysicsPropertiesResponse(True, SET_PHYSICS_PROPERTIES)

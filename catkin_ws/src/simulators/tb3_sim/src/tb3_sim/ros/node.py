@@ -29,7 +29,10 @@ Services: /gazebo/{reset_world, reset_simulation, pause_physics, unpause_physics
   latest laser rays; see renderer) to ~snapshot_path; an unwritable path fails the call with the reason.
 Parameters: see tb3_sim.ros.config (~world, ~spawn_robot, ~model, ~x_pos, ~y_pos, ~yaw, ~robot_name, ~seed,
   ~real_time_factor, ~clock_rate, ~lidar_sees_low_objects, ~clamp_command, ~paused, ~headless, ~snapshot_path,
-  ~publish_static_tf, ~camera_width, ~camera_height, ~camera_rate).
+  ~publish_static_tf, ~camera_width, ~camera_height, ~camera_rate, ~ground_truth_socket).
+Ground truth: with ~ground_truth_socket, the robot's true motion, every world change made through the /gazebo
+  services and a reset go to a trusted client over a private Unix socket (see ground_truth): the grader's
+  channel, which no ROS node can publish on, pause or intercept.
 /use_sim_time is set to true before the node starts if it is absent, as gazebo_ros does. If roscore is
 restarted, the node registers everything again with the new master and sets /use_sim_time there too
 (master_reconnect). When the node exits (Ctrl-C, the launch ending, a bad parameter), it puts /use_sim_time back
@@ -96,6 +99,7 @@ from tb3_sim.core.world_file import load_world
 from tb3_sim.ros import messages
 from tb3_sim.ros.config import config_from_params
 from tb3_sim.ros.gazebo_api import GazeboApi
+from tb3_sim.ros.ground_truth import GroundTruthChannel
 from tb3_sim.ros.outputs import OutputPublisher, robot_outputs, world_outputs
 from tb3_sim.ros.outputs.clock import ClockOutput
 from tb3_sim.ros.outputs.scan import ScanOutput
@@ -133,6 +137,7 @@ class SimNode:
         self._cmd_vel = []        # one Subscriber per robot
         self._static_transforms = ()
         self._static_tf = None
+        self._truth = None        # the GroundTruthChannel when ~ground_truth_socket is set
         if config.publish_static_tf:
             self._static_tf = rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True)
         self._trails = Trails()
@@ -143,6 +148,9 @@ class SimNode:
         self._snapshot = rospy.Service("~snapshot", Empty, self._on_snapshot)
         for publisher, message in self._outputs.latched(world):
             publisher.publish(message)
+        if config.ground_truth_socket:
+            self._truth = GroundTruthChannel(config.ground_truth_socket, self, {
+                "node": rospy.get_name(), "uri": rospy.get_node_uri(), "robot": config.robot_name})
 
     def spawn_robot(self, name, model, pose, robot_namespace):
         """Add a TurtleBot3 of `model` named `name` at `pose` (world) with its topics in `robot_namespace`.
@@ -224,6 +232,8 @@ class SimNode:
             self._world.reset_simulation()
             self._outputs.reset(self._world.time_s)
             self._trail_schedule.reset(self._world.time_s)
+            if self._truth is not None:
+                self._truth.clock_jumped(self._world.time_s)
             self._trails.clear()
 
     def window_opened(self):
@@ -236,6 +246,12 @@ class SimNode:
     def teleported(self):
         """Tell the sensors a model was moved by a service (call with the world locked)."""
         self._outputs.forget_motion()
+
+    def world_changed(self, what, detail=""):
+        """Report a world change a ROS client made (a /gazebo service: `what` is its name) on the ground-truth
+        channel, if one is served."""
+        if self._truth is not None:
+            self._truth.event(what, detail, self._world.time_s)
 
     def _on_cmd_vel(self, message, robot):
         linear, angular = message.linear.x, message.angular.z
@@ -263,12 +279,17 @@ class SimNode:
             # is_set() first: Event.wait takes a lock even when set, a cost on every step when unpaced.
             if not self._running.is_set() and not self._running.wait(PAUSED_POLL_S):
                 self._pacer.restart(self._world.time_s, time.monotonic())
+                if self._truth is not None:
+                    with self._lock:
+                        self._truth.heartbeat(self._world)
                 continue
             with self._lock:
                 now_s = self._world.step()
                 outgoing = self._outputs.collect(self._world)
                 if self._trail_schedule.due(now_s):
                     self._trails.add(self._world.robots())
+                if self._truth is not None:
+                    self._truth.after_step(self._world, now_s)
             try:
                 for publisher, message in outgoing:
                     publisher.publish(message)

@@ -6,16 +6,23 @@ the student's nodes. It
   if it has the expected md5sum; else any service on the master whose md5sum is the expected type's (a
   student's com2009_msgs/SetBool serves for tuos_msgs/SetBool). The md5sum and type come from the service's own
   TCPROS header (a probe, as `rosservice type` does), so a type the grader cannot import is still recognised;
-- prepares the robot before each check (`prepare`): zero /cmd_vel (tb3_sim holds the last command),
-  /gazebo/reset_world, then waits until /odom reports the robot at rest (STILL_SAMPLES consecutive still samples
-  stamped RESET_MARGIN_S or more after the reset returned, within `still_timeout_s` wall seconds);
-- makes one graded call (`observe`): records ground-truth /odom (tb3_sim's has no noise) from before the call,
-  calls the service on a daemon thread, waits for the reply for at most `timeout_s` seconds of SIM time (rospy
-  time under /use_sim_time, so the verdict does not depend on the simulator's real-time factor), keeps recording
-  for `settle_s` of sim time after the reply, and, if asked, reads the front LiDAR distance from the first /scan
-  stamped after that. A call with no reply in time is abandoned on its thread (a hung student callback cannot be
-  interrupted from the client side; the daemon thread dies with the runner), and the observation says
-  "no reply within N s of sim time".
+- reads the robot through tb3_sim's private ground-truth channel (lab_grader.checks.ground_truth), never through
+  /odom, /clock, /scan or /gazebo/reset_world, which any node on the master can forge, pause or serve itself: the
+  simulator's sim time, the robot's true pose and speeds, a reset and a noise-free front distance;
+- prepares the robot before each check (`prepare`): zero /cmd_vel (tb3_sim holds the last command), a reset
+  through the channel, then waits until the robot is at rest (STILL_SAMPLES consecutive still samples stamped
+  RESET_MARGIN_S or more after the reset, within `still_timeout_s` wall seconds);
+- makes one graded call (`observe`): records the true motion from before the call, calls the service on a daemon
+  thread, waits for the reply for at most `timeout_s` seconds of SIM time (the simulator's, so the verdict does
+  not depend on its real-time factor), keeps recording for `settle_s` of sim time after the reply, and, if asked,
+  measures the front distance once still. A call with no reply in time is abandoned on its thread (a hung student
+  callback cannot be interrupted from the client side; the daemon thread dies with the runner), and the
+  observation says "no reply within N s of sim time";
+- watches for interference from the reset before a check to the end of its recording (lab_grader.checks.
+  interference): paused physics and /gazebo world changes (from the channel), and foreign publishers of the
+  simulator's topics or an impostor under its node name (the master, polled every INTERFERENCE_POLL_WALL_S, and
+  the messages of any other publisher of those topics). What was seen is reported in the observation; physics
+  left paused ends the check when the clock has stalled (an interference verdict, not an error).
 
 - finds the actionlib servers a suite expects (`find_actions`): by the course's namespace when its
   <ns>/result topic carries the expected <Name>ActionResult type, else any namespace whose result topic has a type
@@ -29,8 +36,8 @@ A suite without a world has no robot (`robot=False`): no /odom, /scan or /cmd_ve
 wall time, and observations carry no samples.
 
 Sim-time waits are guarded in wall time: if the simulated clock does not advance for CLOCK_STALL_WALL_S wall
-seconds (the simulator died or is paused), the wait ends with a CheckError instead of hanging the runner.
-Topics and services are tb3_sim's single robot in the root namespace: /odom, /scan, /cmd_vel, /gazebo/reset_world.
+seconds (the simulator died), the wait ends with a CheckError instead of hanging the runner.
+The robot is tb3_sim's single robot in the root namespace, driven on /cmd_vel.
 """
 import math
 import os
@@ -47,35 +54,28 @@ import rospy
 import rosservice
 from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import Twist
-from nav_msgs.msg import Odometry
-from sensor_msgs.msg import LaserScan
-from std_srvs.srv import Empty
 
+from lab_grader.checks import interference
 from lab_grader.checks.action_checks import ActionObservation
-from lab_grader.checks.motion import Observation, Sample, front_distance, is_still
-from lab_grader.checks.verdicts import CheckError, FoundService, Interrupted
+from lab_grader.checks.ground_truth import TruthClient
+from lab_grader.checks.motion import Observation, is_still
+from lab_grader.checks.verdicts import CheckError, FoundService, InterferenceError, Interrupted
 from lab_grader.suite_file import GOAL_STATES
 
 NODE_NAME = "lab_grader_checks"
-ODOM_TOPIC = "/odom"
-SCAN_TOPIC = "/scan"
 CMD_VEL_TOPIC = "/cmd_vel"
-RESET_SERVICE = "/gazebo/reset_world"
-FIRST_CLOCK_WALL_S = 30.0      # wait this long for the first /clock (and /odom) before giving up
+FIRST_SAMPLE_WALL_S = 30.0     # wait this long for the first ground-truth sample before giving up
 CLOCK_STALL_WALL_S = 10.0      # sim time frozen this long during a sim-time wait: the simulator is gone
-RESET_TIMEOUT_WALL_S = 10.0    # /gazebo/reset_world must be available (and answer) within this
 CMD_VEL_CONNECT_WALL_S = 5.0   # wait this long for the simulator to connect to our /cmd_vel publisher
-STILL_SAMPLES = 3              # consecutive still /odom samples (0.1 s at 30 Hz) after a reset = at rest
-RESET_MARGIN_S = 0.1           # only /odom stamped this much sim time after the reset returned counts as "after":
-                               # our /clock may lag the simulator's, and a pre-reset sample must never be the origin
-FRONT_SCAN_WAIT_SIM_S = 2.0    # a fresh /scan (5 Hz) must come within this much sim time
+STILL_SAMPLES = 3              # consecutive still samples (0.1 s at 30 Hz) after a reset = at rest
+RESET_MARGIN_S = 0.1           # only samples stamped this much sim time after the reset count as "after it"
+INTERFERENCE_POLL_WALL_S = 0.2  # the master's publishers are looked at this often during a check
 ACTION_CONNECT_WALL_S = 5.0    # an action client must connect to the server's topics within this
 SERVER_ERROR_TEXT = "responded with an error"   # rospy's words for a server's error answer (its callback raised)
 SERVER_ERROR_BYTES = re.compile(r"(responded with an error: )b(['\"])(.*)\2$", re.DOTALL)
 POLL_WALL_S = 0.2              # service discovery polls the master this often
 STATE_NAMES = {getattr(GoalStatus, name): name for name in GOAL_STATES}   # 3 -> "SUCCEEDED"
 WAIT_SLICE_WALL_S = 0.01
-ODOM_QUEUE = 100               # no /odom sample is dropped while the runner is busy (30 Hz x the real-time factor)
 
 
 def message_dict(message):
@@ -113,20 +113,16 @@ def service_class(type_name):
     return _load_class(roslib.message.get_service_class, type_name, "service", type_name)
 
 
-def _yaw(orientation):
-    q = orientation
-    return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
-
-
 class _Call:
-    """One service call on a daemon thread; `done` is set when it returned or raised."""
+    """One service call on a daemon thread; `done` is set when it returned or raised, `replied_s` is `now()` then."""
 
-    def __init__(self, proxy, request):
+    def __init__(self, proxy, request, now):
         self.reply = None
         self.error = None
         self.server_error = False
         self.replied_s = None
         self.done = threading.Event()
+        self._now = now
         self._thread = threading.Thread(target=self._run, args=(proxy, request), daemon=True, name="graded-call")
         self._thread.start()
 
@@ -139,72 +135,129 @@ class _Call:
             self.error = "the call failed: {}: {}".format(type(error).__name__, text)
             self.server_error = SERVER_ERROR_TEXT in text
         finally:
-            self.replied_s = rospy.get_rostime().to_sec()
+            self.replied_s = self._now()
             self.done.set()
 
 
-class GradingContext:
-    """See the module docstring. Create it once per run (it calls rospy.init_node)."""
+class _InterferenceWatch:
+    """The ROS side of interference during one check. Every INTERFERENCE_POLL_WALL_S it asks the master who
+    publishes the guarded topics; a topic that gains a publisher other than the simulator is listened to (only
+    then: subscribing to the simulator's lazy topics would make it compute them), and each message from another
+    node than the simulator (its connection header's callerid) counts as published. It also notes an impostor: the
+    simulator's node name registered with another XML-RPC URI than the one the private channel gave."""
 
-    def __init__(self, robot=True):
+    def __init__(self, simulator):
+        self.simulator = simulator         # the channel's hello: {"node", "uri", "robot"}
+        self.impostor = False
+        self._heard = {}                   # topic -> nodes heard publishing it since restart()
+        self._heard_lock = threading.Lock()
+        self._listening = {}               # topic -> rospy.Subscriber
+        self._polled = -math.inf
+
+    def restart(self):
+        with self._heard_lock:
+            self._heard = {}
+        self.impostor, self._polled = False, -math.inf
+
+    @property
+    def heard(self):
+        with self._heard_lock:
+            return {topic: set(nodes) for topic, nodes in self._heard.items()}
+
+    def _on_message(self, message, topic):
+        node = (getattr(message, "_connection_header", None) or {}).get("callerid")
+        if node != self.simulator["node"]:
+            with self._heard_lock:
+                self._heard.setdefault(topic, set()).add(node or "(unnamed)")
+
+    def poll(self, force=False):
+        if not force and time.monotonic() - self._polled < INTERFERENCE_POLL_WALL_S:
+            return
+        self._polled = time.monotonic()
+        master = rosgraph.Master(rospy.get_name())
+        node = self.simulator["node"]
+        try:
+            publishers = master.getSystemState()[0]
+            uri = master.lookupNode(node)
+        except (rosgraph.MasterError, OSError):
+            return     # the master is busy or the simulator's name is unregistered for a moment: look again later
+        for topic in interference.foreign_publishers(publishers, node):
+            if topic not in self._listening:
+                self._listening[topic] = rospy.Subscriber(topic, rospy.AnyMsg, self._on_message, callback_args=topic,
+                                                          queue_size=10)
+        self.impostor = self.impostor or uri != self.simulator["uri"]
+
+
+class GradingContext:
+    """See the module docstring. Create it once per run (it calls rospy.init_node). With a robot, `ground_truth`
+    is the path of tb3_sim's ground-truth socket (its ~ground_truth_socket)."""
+
+    def __init__(self, robot=True, ground_truth=None):
+        if robot and not ground_truth:
+            raise CheckError("a suite with a world needs the simulator's ground-truth channel (--ground-truth)")
         rospy.init_node(NODE_NAME, anonymous=True)
         self.robot = robot
         self._changed = threading.Condition()
-        self._recording = None            # a list while observe() records, else None
-        self._latest = None               # the latest Sample
-        self._rest_from_s = math.inf      # prepare(): count still samples stamped from this sim time on ...
-        self._rest_count = 0              # ... consecutive ones, up to the latest
-        self._scan = None                 # the latest LaserScan
         self._action_clients = {}         # action name -> SimpleActionClient, made once
         self._sim_seen = (None, time.monotonic())   # (last sim time seen, wall time it changed)
+        self._window = None               # the ground-truth Mark of the current check's start (prepare)
         if not robot:
             return
+        self._truth = TruthClient(ground_truth)
+        self._watch = _InterferenceWatch(self._truth.identity)
         self._cmd_vel = rospy.Publisher(CMD_VEL_TOPIC, Twist, queue_size=1)
-        self._reset = rospy.ServiceProxy(RESET_SERVICE, Empty)
-        rospy.Subscriber(ODOM_TOPIC, Odometry, self._on_odom, queue_size=ODOM_QUEUE)
-        rospy.Subscriber(SCAN_TOPIC, LaserScan, self._on_scan, queue_size=1)
-
-    # ---- subscriptions ------------------------------------------------------------------------------------------
-
-    def _on_odom(self, msg):
-        pose, twist = msg.pose.pose, msg.twist.twist
-        sample = Sample(msg.header.stamp.to_sec(), pose.position.x, pose.position.y, _yaw(pose.orientation),
-                        twist.linear.x, twist.angular.z)
-        with self._changed:
-            self._latest = sample
-            if sample.t >= self._rest_from_s:
-                self._rest_count = self._rest_count + 1 if is_still(sample) else 0
-            if self._recording is not None:
-                self._recording.append(sample)
-            self._changed.notify_all()
-
-    def _on_scan(self, msg):
-        with self._changed:
-            self._scan = msg
-            self._changed.notify_all()
 
     # ---- time -----------------------------------------------------------------------------------------------------
 
     def now(self):
-        """rospy time in seconds: sim time under /use_sim_time."""
-        return rospy.get_rostime().to_sec()
+        """Sim time in seconds: the simulator's own (from the ground-truth channel); without a robot, rospy time."""
+        return self._truth.now() if self.robot else rospy.get_rostime().to_sec()
 
     def _check_running(self):
         if rospy.is_shutdown():
             raise Interrupted("the runner was interrupted (rospy shut down)")
 
     def _check_clock(self):
-        """CheckError when the sim clock has not advanced for CLOCK_STALL_WALL_S wall seconds."""
+        """CheckError when the sim clock has not advanced for CLOCK_STALL_WALL_S wall seconds (InterferenceError
+        when the simulator says physics is paused)."""
         now, wall = self.now(), time.monotonic()
         seen, since = self._sim_seen
         if now != seen:
             self._sim_seen = (now, wall)
         elif wall - since > CLOCK_STALL_WALL_S:
+            self._raise_if_interfered()
             raise CheckError("simulated time stopped at {:.2f} s for {:.0f} s of wall time: is the simulator "
                              "running?".format(now, CLOCK_STALL_WALL_S))
 
+    def _check_interference(self):
+        """During a check: let the watch poll the master."""
+        if self.robot and self._window is not None:
+            self._watch.poll()
+
+    def _findings(self):
+        """What interfered since the check's window opened, in words (lab_grader.checks.interference)."""
+        if not self.robot or self._window is None:
+            return []
+        self._watch.poll(force=True)
+        return interference.findings(self._truth.since(self._window), self._watch.heard, self._watch.impostor,
+                                     self._watch.simulator["node"])
+
+    def _raise_if_interfered(self):
+        findings = self._findings()
+        if findings:
+            raise InterferenceError(findings)
+
+    def _pause(self):
+        """Wait one slice for news (ground truth, or anything else when there is no robot)."""
+        if self.robot:
+            self._truth.wait(WAIT_SLICE_WALL_S)
+        else:
+            with self._changed:
+                self._changed.wait(WAIT_SLICE_WALL_S)
+
     def _wait_sim(self, until_s, done=lambda: False):
-        """Wait until `done()` (True) or sim time `until_s` (False), watching for a stalled clock and shutdown."""
+        """Wait until `done()` (True) or sim time `until_s` (False), watching for a stalled clock, interference and
+        shutdown."""
         self._sim_seen = (None, time.monotonic())
         while True:
             if done():
@@ -212,22 +265,22 @@ class GradingContext:
             if self.now() >= until_s:
                 return False
             self._check_running()
+            self._check_interference()
             self._check_clock()
-            with self._changed:
-                self._changed.wait(WAIT_SLICE_WALL_S)
+            self._pause()
 
     def wait_until_ready(self):
-        """Wait (wall, FIRST_CLOCK_WALL_S) for the first /clock and /odom and for tb3_sim to subscribe /cmd_vel."""
+        """Wait (wall, FIRST_SAMPLE_WALL_S) for the first ground-truth sample and for tb3_sim to subscribe
+        /cmd_vel."""
         if not self.robot:
             return
-        deadline = time.monotonic() + FIRST_CLOCK_WALL_S
-        while rospy.get_rostime().is_zero() or self._latest is None:
+        deadline = time.monotonic() + FIRST_SAMPLE_WALL_S
+        while self._truth.latest is None:
             self._check_running()
             if time.monotonic() > deadline:
-                missing = "/clock" if rospy.get_rostime().is_zero() else ODOM_TOPIC
-                raise CheckError("no {} after {:.0f} s: is tb3_sim running on {}?".format(
-                    missing, FIRST_CLOCK_WALL_S, rosgraph.get_master_uri()))
-            time.sleep(WAIT_SLICE_WALL_S)
+                raise CheckError("no ground-truth sample after {:.0f} s: is tb3_sim running with physics "
+                                 "unpaused?".format(FIRST_SAMPLE_WALL_S))
+            self._truth.wait(WAIT_SLICE_WALL_S)
         deadline = time.monotonic() + CMD_VEL_CONNECT_WALL_S
         while self._cmd_vel.get_num_connections() == 0 and time.monotonic() < deadline:
             self._check_running()
@@ -365,41 +418,35 @@ class GradingContext:
             self._cmd_vel.publish(Twist())
 
     def prepare(self, still_timeout_s):
-        """Zero /cmd_vel, reset the world, and wait until the robot is at rest (CheckError if it is not)."""
+        """Open the check's interference window, zero /cmd_vel, reset the world through the ground-truth channel,
+        and wait until the robot is at rest (CheckError if it is not)."""
         self._check_running()
         if not self.robot:
             return
+        self._window = self._truth.mark()
+        self._watch.restart()
         self.stop_robot()
-        try:
-            self._reset.wait_for_service(RESET_TIMEOUT_WALL_S)
-            self._reset()
-        except (rospy.ROSException, rospy.ServiceException) as error:
-            raise CheckError("{} failed: {}".format(RESET_SERVICE, error)) from None
+        reset_s = self._truth.request("reset_world")["t"]
         self.stop_robot()
         deadline = time.monotonic() + still_timeout_s
-        with self._changed:
-            self._rest_from_s, self._rest_count = self.now() + RESET_MARGIN_S, 0
-            while self._rest_count < STILL_SAMPLES:
-                self._check_running()
-                if time.monotonic() > deadline:
-                    latest = self._latest
-                    if latest is None or latest.t < self._rest_from_s:
-                        raise CheckError("no {} within {:.0f} s after {}: is the simulator running?".format(
-                            ODOM_TOPIC, still_timeout_s, RESET_SERVICE))
-                    raise CheckError("the robot did not come to rest within {:.0f} s after {} (v={:.3f} m/s, "
-                                     "w={:.3f} rad/s): is a node still driving it?".format(
-                                         still_timeout_s, RESET_SERVICE, round(latest.v, 3) + 0.0,
-                                         round(latest.w, 3) + 0.0))
-                self._changed.wait(WAIT_SLICE_WALL_S)
-
-    def _front_distance_after(self, after_s):
-        """The front LiDAR distance from the first /scan stamped at or after sim time `after_s`."""
-        def fresh():
-            return self._scan is not None and self._scan.header.stamp.to_sec() >= after_s
-        if not self._wait_sim(self.now() + FRONT_SCAN_WAIT_SIM_S, fresh):
-            raise CheckError("no {} within {:.0f} s of sim time".format(SCAN_TOPIC, FRONT_SCAN_WAIT_SIM_S))
-        scan = self._scan
-        return front_distance(scan.ranges, scan.angle_min, scan.angle_increment, scan.range_min)
+        while True:
+            after = [sample for sample in self._truth.since(self._window).samples
+                     if sample.t >= reset_s + RESET_MARGIN_S]
+            tail = after[-STILL_SAMPLES:]
+            if len(tail) == STILL_SAMPLES and all(is_still(sample) for sample in tail):
+                return
+            self._check_running()
+            self._check_interference()
+            if time.monotonic() > deadline:
+                self._raise_if_interfered()
+                if not after:
+                    raise CheckError("no ground truth within {:.0f} s after the reset: is the simulator "
+                                     "running?".format(still_timeout_s))
+                latest = after[-1]
+                raise CheckError("the robot did not come to rest within {:.0f} s after the reset (v={:.3f} m/s, "
+                                 "w={:.3f} rad/s): is a node still driving it?".format(
+                                     still_timeout_s, round(latest.v, 3) + 0.0, round(latest.w, 3) + 0.0))
+            self._truth.wait(WAIT_SLICE_WALL_S)
 
     # ---- one graded call ------------------------------------------------------------------------------------------
 
@@ -411,30 +458,30 @@ class GradingContext:
         except (AttributeError, TypeError) as error:
             raise CheckError("bad request for {}: {}".format(service.expected_type, error)) from None
         proxy = rospy.ServiceProxy(service.found, srv_class)
-        with self._changed:
-            self._recording = [self._latest] if self._latest is not None else []
+        origin, recording = (self._truth.latest, self._truth.mark()) if self.robot else (None, None)
         error = reply = replied_s = None
         front, front_measured = None, False
-        try:
-            sent_s = self.now()
-            call = _Call(proxy, request)
-            answered = self._wait_sim(sent_s + timeout_s, call.done.is_set)
-            if not answered:
-                error = "no reply within {:g} s of sim time".format(timeout_s)
-            elif call.error is not None:
-                error = call.error
-            else:
-                reply, replied_s = message_dict(call.reply), call.replied_s
-                if self.robot:
-                    self._wait_sim(replied_s + settle_s)
-                if measure_front:
-                    front, front_measured = self._front_distance_after(self.now()), True
-        finally:
-            with self._changed:
-                samples, self._recording = tuple(self._recording), None
+        sent_s = self.now()
+        call = _Call(proxy, request, self.now)
+        answered = self._wait_sim(sent_s + timeout_s, call.done.is_set)
+        if not answered:
+            error = "no reply within {:g} s of sim time".format(timeout_s)
+        elif call.error is not None:
+            error = call.error
+        else:
+            reply, replied_s = message_dict(call.reply), call.replied_s
+            if self.robot:
+                self._wait_sim(replied_s + settle_s)
+            if measure_front:
+                front, front_measured = self._truth.request("front_distance")["front_m"], True
+        samples, interfered = None, ()
+        if self.robot:
+            samples = ((origin,) if origin is not None else ()) + self._truth.since(recording).samples
+            interfered = tuple(self._findings())
         return Observation(request=dict(request_fields), reply=reply, error=error, sent_s=sent_s,
-                           replied_s=replied_s, samples=samples if self.robot else None, front_distance_m=front,
-                           front_measured=front_measured, server_error=answered and call.server_error)
+                           replied_s=replied_s, samples=samples, front_distance_m=front,
+                           front_measured=front_measured, server_error=answered and call.server_error,
+                           interference=interfered)
 
     # ---- one graded goal --------------------------------------------------------------------------------------------
 
@@ -480,7 +527,10 @@ class GradingContext:
                                  cancelled_s, outcome["ended_s"])
 
     def shutdown(self):
-        """Stop the robot and leave the graph (abandoned call threads die with the process)."""
+        """Stop the robot, close the ground-truth channel and leave the graph (abandoned call threads die with the
+        process)."""
         if not rospy.is_shutdown():
             self.stop_robot()
             rospy.signal_shutdown("checks done (pid {})".format(os.getpid()))
+        if self.robot:
+            self._truth.close()

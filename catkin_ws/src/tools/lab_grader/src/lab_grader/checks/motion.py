@@ -1,7 +1,8 @@
 """What the robot did during one graded call, from ground-truth odometry samples (plain Python, no ROS).
 
-A `Sample` is one /odom message of tb3_sim (ground truth there: no noise): sim time (s), pose (x, y in m, yaw in
-rad, world = odom frame) and body-frame velocities (v forward in m/s, w counter-clockwise in rad/s).
+A `Sample` is one ground-truth state of tb3_sim's robot (its private channel, lab_grader.checks.ground_truth; no
+noise): sim time (s), pose (x, y in m, yaw in rad, world = odom frame) and body-frame velocities (v forward in m/s,
+w counter-clockwise in rad/s).
 
 `summarize(samples, since_s)` turns a recording into a `MotionSummary`, measured in the robot's *initial* frame,
 the pose at the moment the request was sent (the last sample at or before `since_s`):
@@ -15,11 +16,8 @@ the pose at the moment the request was sent (the last sample at or before `since
 - still_at_end: the last sample is still (the recorder ends it `settle_s` after the reply).
 Times in the evidence (started_after_s, stopped_after_s) count from `since_s`, the moment the request was sent.
 
-Resolution: tb3_sim publishes /odom at 30 Hz, so start and stop are known to 1/30 s; a TurtleBot3's drive ramps at
-about 1 m/s^2, so a 0.1 m/s motion reads ~0.1 s longer than its command.
-
-`front_distance(...)`: the closest LiDAR return straight ahead (minimum over +-20 degrees, inf/NaN and readings
-below range_min ignored), the sensor-side measurement of an approach.
+Resolution: tb3_sim reports the state at 30 Hz, so start and stop are known to 1/30 s; a TurtleBot3's drive ramps
+at about 1 m/s^2, so a 0.1 m/s motion reads ~0.1 s longer than its command.
 """
 import math
 from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Tuple
@@ -27,7 +25,6 @@ from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Tuple
 STILL_LINEAR_MPS = 0.01
 STILL_ANGULAR_RADPS = 0.01
 MAX_TRAJECTORY_POINTS = 400
-FRONT_HALF_WIDTH_DEG = 20.0
 
 
 class Sample(NamedTuple):
@@ -77,9 +74,11 @@ class MotionSummary(NamedTuple):
 class Observation(NamedTuple):
     """The raw record of one graded call: the request sent, the reply (fields as a dict) or the error text, when
     (sim s) the request went out and the reply came back, every /odom sample from before the call until `settle_s`
-    after the reply (None when the suite has no robot), and the front LiDAR distance once still (m; None when
-    nothing was in range, or when not measured: see `front_measured`). `server_error` is True when the error is
-    the server's own answer (its callback raised), not a timeout or a broken connection."""
+    after the reply (None when the suite has no robot), and the distance to the nearest object ahead once still (m;
+    the LiDAR's view without its noise, from the simulator's private channel; None when nothing was in range, or
+    when not measured: see `front_measured`). `server_error` is True when the error is
+    the server's own answer (its callback raised), not a timeout or a broken connection. `interference` lists what
+    the submission did to the measurement meanwhile, in words (lab_grader.checks.interference; empty: nothing)."""
 
     request: Dict[str, Any]
     reply: Optional[Dict[str, Any]]
@@ -90,6 +89,7 @@ class Observation(NamedTuple):
     front_distance_m: Optional[float] = None
     front_measured: bool = False
     server_error: bool = False
+    interference: Tuple[str, ...] = ()
 
 
 class MotionError(ValueError):
@@ -162,21 +162,3 @@ def thin(samples: Sequence[Sample], since_s: float, max_points: int = MAX_TRAJEC
         chosen = sorted({round(i * (count - 1) / (max_points - 1)) for i in range(max_points)})
     return [[round(samples[i].t - since_s, 3), round(samples[i].x, 4), round(samples[i].y, 4),
              round(samples[i].yaw, 4)] for i in chosen]
-
-
-def beam_angle_deg(index, angle_min, angle_increment):
-    """Angle of beam `index` in degrees, wrapped into (-180, 180]."""
-    degrees = math.degrees(angle_min + index * angle_increment) % 360.0
-    return degrees - 360.0 if degrees > 180.0 else degrees
-
-
-def front_distance(ranges: Sequence[float], angle_min: float, angle_increment: float, range_min: float,
-                   half_width_deg: float = FRONT_HALF_WIDTH_DEG) -> Optional[float]:
-    """The smallest valid reading within +-`half_width_deg` of straight ahead (m), or None when there is none.
-
-    A reading is valid when finite and >= range_min (below it is no real return). No smoothing: with tb3_sim's
-    noise (sigma 0.01 m) the minimum of the ~40 beams on a wall ahead reads about 1-2 cm short."""
-    readings = [r for i, r in enumerate(ranges)
-                if abs(beam_angle_deg(i, angle_min, angle_increment)) <= half_width_deg
-                and math.isfinite(r) and r >= range_min]
-    return min(readings) if readings else None

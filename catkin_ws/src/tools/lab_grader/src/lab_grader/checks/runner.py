@@ -5,7 +5,10 @@ is the real one; the unit tests use a fake): service checks go to lab_grader.che
 to lab_grader.checks.action_checks. A check that cannot be run (a service not found, the runner interrupted, the
 context failing to start) gets an error verdict; every check of the suite is listed in the results.
 
-`main()` is `rosrun lab_grader run_checks --suite <name or path> --out <results.json> [--check-timeout S]`:
+`main()` is `rosrun lab_grader run_checks --suite <name or path> --out <results.json> [--check-timeout S]
+[--ground-truth SOCKET] [--exercise FILE]` (a suite with a world needs SOCKET, tb3_sim's ~ground_truth_socket;
+--exercise runs only the checks of the services and actions the course's FILE serves, for the grader, which runs
+each exercise's node alone):
 the results file (lab_grader.checks.verdicts) is always written, atomically, also when checks errored or the
 runner was interrupted (then "complete": false); exit code 0 once it is written, 2 for a bad suite or arguments
 (nothing written), 1 if the file could not be written. Each check prints one line, `[3/17] pass  timed_fwd ...`,
@@ -84,7 +87,7 @@ def run_suite(suite, make_context, check_timeout_s=None, log=print):
             except (Interrupted, KeyboardInterrupt):
                 interrupted = True
                 verdict = Verdict.errored("not run: the runner was interrupted", not_run_evidence(check))
-        result = CheckResult(check.id, check.title, check.weight, verdict)
+        result = CheckResult(check.id, check.title, check.weight, verdict, check.kind)
         results.append(result)
         log("[{}/{}] {}".format(number, len(suite.checks), summarize_verdicts([result])[0]))
 
@@ -96,6 +99,16 @@ def run_suite(suite, make_context, check_timeout_s=None, log=print):
         except Exception:  # noqa: BLE001 - the graph may be gone; the results matter more
             pass
     return results_document(suite.name, services, results, complete=not interrupted, timing=timing)
+
+
+def exercise_suite(suite, node):
+    """`suite` cut down to the services, actions and checks of the exercise whose course file is `node`."""
+    exercise = next((exercise for exercise in suite.exercises() if exercise.node == node), None)
+    if exercise is None:
+        raise SuiteError("{}: no exercise is served by a file named {} (files: {})".format(
+            suite.path.name, node, ", ".join(suite.nodes)))
+    return suite._replace(services=exercise.services, actions=exercise.actions,
+                          checks=tuple(check for check in suite.checks if check.id in exercise.check_ids))
 
 
 # ---- command line ---------------------------------------------------------------------------------------------------
@@ -119,6 +132,12 @@ def parse_args(argv):
     parser.add_argument("--out", required=True, type=Path, help="the results file to write (JSON)")
     parser.add_argument("--check-timeout", type=positive_seconds, default=None, metavar="S",
                         help="reply timeout of every check, seconds of sim time (default: each check's timeout_s)")
+    parser.add_argument("--exercise", metavar="FILE", default=None,
+                        help="only the checks of the services and actions that the course's file FILE serves (a "
+                        "suite's node:)")
+    parser.add_argument("--ground-truth", metavar="SOCKET", default=None,
+                        help="tb3_sim's private ground-truth socket (its ~ground_truth_socket); needed when the "
+                        "suite has a world: the checks measure the robot through it, never through /odom")
     # ROS remappings (name:=value) are for rospy, not for us, as rospy.myargv would strip them.
     return parser.parse_args([arg for arg in argv if ":=" not in arg])
 
@@ -127,6 +146,8 @@ def main(argv=None):
     args = parse_args(sys.argv[1:] if argv is None else argv)
     try:
         suite = load_suite(args.suite)
+        if args.exercise is not None:
+            suite = exercise_suite(suite, args.exercise)
     except SuiteError as error:
         print("run_checks: {}".format(error), file=sys.stderr)
         return 2
@@ -136,7 +157,7 @@ def main(argv=None):
     def make_context():
         # Imported here so that the checks' logic above imports (and is unit-tested) without rospy.
         from lab_grader.checks.context import GradingContext
-        contexts.append(GradingContext(robot=suite.world is not None))
+        contexts.append(GradingContext(robot=suite.world is not None, ground_truth=args.ground_truth))
         return contexts[-1]
 
     document = run_suite(suite, make_context, args.check_timeout, log=lambda line: print(line, flush=True))

@@ -13,6 +13,8 @@ against a context (lab_grader.checks.context.GradingContext, or any object with 
   "expected ..., <what happened>" (e.g. "expected to drive forwards 0.4..0.6 m along its initial heading, it drove
   backwards 0.500 m").
 - pass: every expectation holds; the reason sums up the reply and the measured motion.
+- interference: the submission tampered with the measurement during the check (lab_grader.checks.interference:
+  paused physics, a teleport, a forged /odom or /clock); whatever the robot did, the reason names the tampering.
 - `refused: true` turns it around for a call that must fail (an int64 sum out of range): the server raising
   passes, with its text as the reason, and a reply fails.
 
@@ -20,7 +22,7 @@ A suite without a world has no robot: its observations carry no /odom samples (N
 """
 from lab_grader.checks.fields import field_problems, shown
 from lab_grader.checks.motion import MotionError, summarize, thin
-from lab_grader.checks.verdicts import Interrupted, Verdict
+from lab_grader.checks.verdicts import InterferenceError, Interrupted, Verdict
 
 NEGLIGIBLE_M = 0.005
 NEGLIGIBLE_DEG = 0.5
@@ -159,6 +161,8 @@ def judge(check, observation, settle_s) -> Verdict:
         except MotionError:
             motion = None
     evidence = evidence_of(check, observation, motion)
+    if observation.interference:
+        return Verdict.interfered(observation.interference, evidence)
     expect = check.expect
     if observation.error is not None and not (expect.refused and observation.server_error):
         return Verdict.errored(observation.error, evidence)
@@ -198,5 +202,7 @@ def run_check(check, suite, context, found) -> Verdict:
         return judge(check, observation, suite.settle_s)
     except Interrupted:
         raise
+    except InterferenceError as error:
+        return Verdict.interfered(error.findings, evidence_of(check, None, None))
     except Exception as error:  # noqa: BLE001 - a check never crashes the runner
         return Verdict.errored("{}: {}".format(type(error).__name__, error), evidence_of(check, None, None))

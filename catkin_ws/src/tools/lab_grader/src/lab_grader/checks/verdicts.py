@@ -14,8 +14,8 @@ The results file (JSON, schema `RESULTS_SCHEMA`), written atomically by `write_r
         ...
       },
       "checks": [
-        {"id": "move_true", "title": "...", "weight": 16,
-         "verdict": "pass" | "fail" | "error",
+        {"id": "move_true", "title": "...", "kind": "required" | "advice", "weight": 16,
+         "verdict": "pass" | "fail" | "error" | "interference" | "crashed",
          "reason": "one line: what was expected and what happened",
          "evidence": {"request": {...}, "reply": {...} | null,
                       "motion": {"duration_s", "forward_m", "lateral_m", "turn_deg", "still_at_end", ...} | null,
@@ -23,7 +23,8 @@ The results file (JSON, schema `RESULTS_SCHEMA`), written atomically by `write_r
                       ...}},                                 # check-specific extras (reply_after_s, front_distance_m)
         ...
       ],
-      "score": 84, "max_score": 100,         # sum of the weights of passed checks / of all checks
+      "score": 84, "max_score": 100,         # sum of the weights of passed checks / of all checks (advice checks
+                                              # weigh 0 unless the suite gives them weight)
       "complete": true,                       # false when the runner was interrupted before every check ran
       "timing": {"wall_s": 41.2, "sim_s": 95.0}
     }
@@ -31,6 +32,10 @@ The results file (JSON, schema `RESULTS_SCHEMA`), written atomically by `write_r
 Verdicts: pass / fail when the service answered and the measurement was made (fail: it was measured and is
 wrong); error when it could not be measured: the service was missing, the call raised, it did not reply in
 time, or the robot could not be prepared. Errors score 0 like failures; the orchestrator may tell them apart.
+Crashed (given by the grader, lab_grader.grade): the student's node exited during start-up or the checks; the
+reason holds the last line of its traceback. Interference: the submission tampered with what the check measures
+(paused physics, teleported the robot, published the simulator's topics; lab_grader.checks.interference): 0 points,
+the reason names what it did.
 Non-finite floats (a NaN request field) are written as the strings "nan", "inf", "-inf" so the file is strict JSON;
 the file is compact (no indentation: a suite's trajectories are thousands of numbers): `python3 -m json.tool` shows
 it indented.
@@ -48,13 +53,24 @@ RESULTS_SCHEMA = "lab_grader.results/1"
 PASS = "pass"
 FAIL = "fail"
 ERROR = "error"
-VERDICTS = (PASS, FAIL, ERROR)
+INTERFERENCE = "interference"
+CRASHED = "crashed"
+VERDICTS = (PASS, FAIL, ERROR, INTERFERENCE, CRASHED)
 MAX_REASON_CHARS = 400
 
 
 class CheckError(GraderError):
     """A check could not be measured (the simulator stopped, the robot would not come to rest): an error verdict
     with this text."""
+
+
+class InterferenceError(CheckError):
+    """The submission tampered with the measurement (lab_grader.checks.interference): an interference verdict
+    naming `findings` (what it did, in words)."""
+
+    def __init__(self, findings):
+        super().__init__("; ".join(findings))
+        self.findings = tuple(findings)
 
 
 class Interrupted(CheckError):
@@ -80,6 +96,16 @@ class Verdict(NamedTuple):
     def errored(cls, reason, evidence=None):
         return cls(ERROR, one_line(reason), dict(evidence or {}))
 
+    @classmethod
+    def crashed(cls, reason, evidence=None):
+        return cls(CRASHED, one_line(reason), dict(evidence or {}))
+
+    @classmethod
+    def interfered(cls, what, evidence=None):
+        """`what`: the findings in words (lab_grader.checks.interference.findings)."""
+        return cls(INTERFERENCE, one_line("the submission interfered with the measurement: " + "; ".join(what)),
+                   dict(evidence or {}, interference=list(what)))
+
 
 class FoundService(NamedTuple):
     """How a suite's service was found: `found` is the name to call (None: not found), `found_by` "by name",
@@ -102,13 +128,15 @@ class CheckResult(NamedTuple):
     title: str
     weight: float
     verdict: Verdict
+    kind: str = "required"     # suite_file.REQUIRED or ADVICE
 
     @property
     def points(self):
         return self.weight if self.verdict.verdict == PASS else 0
 
     def as_json(self):
-        return {"id": self.id, "title": self.title, "weight": self.weight, "verdict": self.verdict.verdict,
+        return {"id": self.id, "title": self.title, "kind": self.kind, "weight": self.weight,
+                "verdict": self.verdict.verdict,
                 "reason": self.verdict.reason, "evidence": self.verdict.evidence}
 
 
@@ -118,7 +146,7 @@ def one_line(text, limit=MAX_REASON_CHARS):
     return flat if len(flat) <= limit else flat[:limit - 3] + "..."
 
 
-def _tidy(number):
+def tidy(number):
     """Integral floats as ints (so 16.0 weights read 16), others rounded to 1e-6."""
     number = round(number, 6)
     return int(number) if float(number).is_integer() else number
@@ -126,7 +154,7 @@ def _tidy(number):
 
 def score(results: Sequence[CheckResult]):
     """(points, max_points): the weights of passed checks, and of all checks."""
-    return _tidy(sum(result.points for result in results)), _tidy(sum(result.weight for result in results))
+    return tidy(sum(result.points for result in results)), tidy(sum(result.weight for result in results))
 
 
 def json_safe(value):
@@ -183,5 +211,5 @@ def write_results(path, document: Dict[str, Any]) -> Path:
 
 def summarize_verdicts(results: Sequence[CheckResult]) -> List[str]:
     """One line per check for a terminal: `pass  move_true (16/16): reason`."""
-    return ["{:<5} {} ({}/{}): {}".format(result.verdict.verdict, result.id, _tidy(result.points),
-                                          _tidy(result.weight), result.verdict.reason) for result in results]
+    return ["{:<5} {} ({}/{}): {}".format(result.verdict.verdict, result.id, tidy(result.points),
+                                          tidy(result.weight), result.verdict.reason) for result in results]
