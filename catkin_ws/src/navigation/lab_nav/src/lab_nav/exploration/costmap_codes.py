@@ -7,18 +7,15 @@ through the same formula on their unsigned byte and wrap, as in the original's l
 
 import numpy as np
 
-FREE_SPACE = 0
-INSCRIBED_INFLATED_OBSTACLE = 253
-LETHAL_OBSTACLE = 254
-NO_INFORMATION = 255
+from lab_nav.costmap.values import FREE, INSCRIBED, LETHAL, NO_INFORMATION
 
 
 def _translation_table():
     values = np.arange(256, dtype=np.int64)
     table = ((1 + (251 * (values - 1)) // 97) & 0xFF).astype(np.uint8)
-    table[0] = FREE_SPACE
-    table[99] = INSCRIBED_INFLATED_OBSTACLE
-    table[100] = LETHAL_OBSTACLE
+    table[0] = FREE
+    table[99] = INSCRIBED
+    table[100] = LETHAL
     table[255] = NO_INFORMATION   # -1 as an unsigned byte
     return table
 

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from lab_nav.exploration.costmap_codes import FREE_SPACE, NO_INFORMATION
+from lab_nav.costmap.values import FREE, NO_INFORMATION
 
 OUT_OF_BOUNDS = "Robot out of costmap bounds, cannot search for frontiers"
 NO_CLEAR_CELL = "Could not find nearby clear cell to start search"
@@ -93,7 +93,7 @@ class FrontierSearch:
         queue = deque([start])
         while queue:
             index = queue.popleft()
-            if self._codes[index] == FREE_SPACE:
+            if self._codes[index] == FREE:
                 return index
             for neighbour in self._nhood8(index):
                 if neighbour not in visited:
@@ -105,7 +105,7 @@ class FrontierSearch:
         codes = self._codes
         if codes[index] != NO_INFORMATION or frontier_flag[index]:
             return False
-        return any(codes[neighbour] == FREE_SPACE for neighbour in self._nhood4(index))
+        return any(codes[neighbour] == FREE for neighbour in self._nhood4(index))
 
     def _build_frontier(self, seed, reference, frontier_flag):
         frontier = Frontier(initial=self._centre(seed))
