@@ -62,6 +62,15 @@ class TopicProbe:
         args = {} if image_file is None else {"image_file": str(image_file)}
         return self._ask("subscribe", topic=topic, type=msg_type, wait_s=wait_s, **args)["connections"]
 
+    def subscribe_images(self, topics, folder):
+        """Subscribe to each image topic of `topics` ({topic: type}) with its own .npy file in `folder` (see
+        `subscribe`); returns {topic: path}, the files for `latest_image`."""
+        files = {}
+        for topic, msg_type in topics.items():
+            files[topic] = Path(folder) / (topic.strip("/").replace("/", "_") + ".npy")
+            self.subscribe(topic, msg_type, image_file=files[topic])
+        return files
+
     @staticmethod
     def latest_image(image_file):
         """The latest image the probe decoded into `image_file` (a numpy array), or None before the first."""

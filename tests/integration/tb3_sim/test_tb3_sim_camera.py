@@ -49,10 +49,7 @@ def camera(ros_master, sim, tmp_path_factory):
     """A probe on every camera topic (images decoded by cv_bridge into .npy files), started after /use_sim_time."""
     folder = tmp_path_factory.mktemp("images")
     probe = ros_master.probe()
-    files = {}
-    for topic, msg_type in IMAGE_TOPICS.items():
-        files[topic] = folder / (topic.strip("/").replace("/", "_") + ".npy")
-        probe.subscribe(topic, msg_type, image_file=files[topic])
+    files = probe.subscribe_images(IMAGE_TOPICS, folder)
     for topic, msg_type in INFO_TOPICS.items():
         probe.subscribe(topic, msg_type)
     probe.subscribe("/tf_static", "tf2_msgs/TFMessage")

@@ -38,10 +38,7 @@ def sim(ros_master):
 def camera(ros_master, sim, tmp_path_factory):
     folder = tmp_path_factory.mktemp("images")
     probe = ros_master.probe()
-    files = {}
-    for topic, msg_type in IMAGE_TOPICS.items():
-        files[topic] = folder / (topic.strip("/").replace("/", "_") + ".npy")
-        probe.subscribe(topic, msg_type, image_file=files[topic])
+    files = probe.subscribe_images(IMAGE_TOPICS, folder)
     probe.subscribe("/camera/rgb/camera_info", "sensor_msgs/CameraInfo")
     probe.subscribe("/gazebo/model_states", "gazebo_msgs/ModelStates")
     probe.subscribe("/gazebo/scene_primitives", "std_msgs/String")
