@@ -108,6 +108,13 @@ def action_message_class(type_name, part):
     return _load_class(roslib.message.get_message_class, type_name + part, "action", type_name)
 
 
+def _wait_wall(deadline, done):
+    """Polls `done()` until it is true or the wall-clock `deadline` (time.monotonic()) passes; returns done()."""
+    while not done() and time.monotonic() < deadline:
+        time.sleep(WAIT_SLICE_WALL_S)
+    return done()
+
+
 def service_class(type_name):
     """The Python class of service type `type_name` (CheckError when it cannot be imported)."""
     return _load_class(roslib.message.get_service_class, type_name, "service", type_name)
@@ -188,6 +195,35 @@ class _InterferenceWatch:
         self.impostor = self.impostor or uri != self.simulator["uri"]
 
 
+class _FeedbackRecorder:
+    """Every message on an action's feedback topic, with the time it arrived, from a subscriber of its own.
+
+    SimpleActionClient drops a feedback that arrives before its send_goal has stored the new goal handle, which a
+    server that sends its first feedback as soon as the goal arrives can hit on a busy CPU: the student would lose
+    a mark for actionlib's race. This subscriber is connected before any goal is sent and keeps everything; the
+    goal's own messages are picked out by its goal id afterwards."""
+
+    def __init__(self, action_name, feedback_class, now):
+        self._now = now
+        self._lock = threading.Lock()
+        self._messages = []
+        self._subscriber = rospy.Subscriber(action_name + "/feedback", feedback_class, self._on_message)
+
+    def _on_message(self, message):
+        arrived_s = self._now()
+        with self._lock:
+            self._messages.append((arrived_s, message))
+
+    def connected(self):
+        return self._subscriber.get_num_connections() > 0
+
+    def of_goal(self, goal_id, sent_s):
+        """[(s after the goal was sent, the feedback's fields)] of goal `goal_id`, in arrival order."""
+        with self._lock:
+            return [(arrived_s - sent_s, message_dict(message.feedback)) for arrived_s, message in self._messages
+                    if message.status.goal_id.id == goal_id]
+
+
 class GradingContext:
     """See the module docstring. Create it once per run (it calls rospy.init_node). With a robot, `ground_truth`
     is the path of tb3_sim's ground-truth socket (its ~ground_truth_socket)."""
@@ -198,7 +234,7 @@ class GradingContext:
         rospy.init_node(NODE_NAME, anonymous=True)
         self.robot = robot
         self._changed = threading.Condition()
-        self._action_clients = {}         # action name -> SimpleActionClient, made once
+        self._action_clients = {}         # action name -> (SimpleActionClient, _FeedbackRecorder), made once
         self._sim_seen = (None, time.monotonic())   # (last sim time seen, wall time it changed)
         self._window = None               # the ground-truth Mark of the current check's start (prepare)
         if not robot:
@@ -486,44 +522,50 @@ class GradingContext:
     # ---- one graded goal --------------------------------------------------------------------------------------------
 
     def _action_client(self, action: FoundService):
-        client = self._action_clients.get(action.found)
-        if client is None:
+        made = self._action_clients.get(action.found)
+        if made is None:
             client = actionlib.SimpleActionClient(action.found, action_message_class(action.expected_type, "Action"))
-            if not client.wait_for_server(rospy.Duration(ACTION_CONNECT_WALL_S)):
+            recorder = _FeedbackRecorder(action.found, action_message_class(action.expected_type, "ActionFeedback"),
+                                         self.now)
+            deadline = time.monotonic() + ACTION_CONNECT_WALL_S
+            if not (client.wait_for_server(rospy.Duration(ACTION_CONNECT_WALL_S))
+                    and _wait_wall(deadline, recorder.connected)):
                 raise CheckError("the action client could not connect to {} within {:.0f} s".format(
                     action.found, ACTION_CONNECT_WALL_S))
-            self._action_clients[action.found] = client
-        return client
+            made = self._action_clients[action.found] = (client, recorder)
+        return made
 
     def observe_action(self, action: FoundService, goal_fields, timeout_s, cancel_after_s=None):
         """Send one goal with `goal_fields` to `action.found` and record how it went (an ActionObservation)."""
-        client = self._action_client(action)
+        client, recorder = self._action_client(action)
         try:
             goal = action_message_class(action.expected_type, "Goal")(**goal_fields)
         except (AttributeError, TypeError) as error:
             raise CheckError("bad goal for {}: {}".format(action.expected_type, error)) from None
-        feedback, ended = [], threading.Event()
+        ended = threading.Event()
         outcome = {}
-
-        def on_feedback(message):
-            feedback.append((self.now() - sent_s, message_dict(message)))
 
         def on_done(state, result):
             outcome.update(state=state, result=None if result is None else message_dict(result), ended_s=self.now())
             ended.set()
 
         sent_s = self.now()
-        client.send_goal(goal, done_cb=on_done, feedback_cb=on_feedback)
+        client.send_goal(goal, done_cb=on_done)
+        goal_id = client.gh.comm_state_machine.action_goal.goal_id.id
+
+        def feedback():
+            return tuple(recorder.of_goal(goal_id, sent_s))
+
         cancelled_s = None
         if cancel_after_s is not None and not self._wait_sim(sent_s + cancel_after_s, ended.is_set):
             cancelled_s = self.now()
             client.cancel_goal()
         if not self._wait_sim(sent_s + timeout_s, ended.is_set):
             client.cancel_goal()
-            return ActionObservation(dict(goal_fields), None, "", None, tuple(feedback), sent_s, cancelled_s, None,
+            return ActionObservation(dict(goal_fields), None, "", None, feedback(), sent_s, cancelled_s, None,
                                      error="no result within {:g} s".format(timeout_s))
         return ActionObservation(dict(goal_fields), STATE_NAMES.get(outcome["state"], str(outcome["state"])),
-                                 client.get_goal_status_text() or "", outcome["result"], tuple(feedback), sent_s,
+                                 client.get_goal_status_text() or "", outcome["result"], feedback(), sent_s,
                                  cancelled_s, outcome["ended_s"])
 
     def shutdown(self):
