@@ -36,7 +36,7 @@ from lab_nav.exploration.costmap_codes import apply_update, costmap_codes
 from lab_nav.exploration.explorer import BLACKLISTED, SEND, STOP, Explorer
 from lab_nav.exploration.frontier_search import OUT_OF_BOUNDS, FrontierSearch
 from lab_nav.maps.geometry import MapGeometry
-from turtlesim.ros.console import use_roscpp_console
+from roscpp_console.handler import use_roscpp_console
 
 EXIT_BAD_PARAMETER = 1
 TF_CACHE_S = 10.0

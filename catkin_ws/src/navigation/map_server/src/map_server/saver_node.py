@@ -18,8 +18,9 @@ from nav_msgs.msg import OccupancyGrid
 
 from lab_nav.maps.map_saver_files import pgm_bytes, quaternion_yaw, yaml_text
 from map_server.command_line import CommandLineExit, parse_saver_args
-from map_server.console import error_line, use_roscpp_console
 from map_server.messages import message_cells
+from roscpp_console.handler import use_roscpp_console
+from roscpp_console.line_format import error_line
 
 SAVED_POLL_S = 0.1   # wall time between looks at whether the map was saved or the node shut down
 

@@ -21,8 +21,9 @@ from lab_nav.maps.errors import MapFileError
 from lab_nav.maps.map_loader import DEPRECATED_DEFAULTS, deprecated_description, load_image_map
 from lab_nav.maps.map_yaml import read_map_yaml
 from map_server.command_line import EXIT_SERVER_ERROR, SERVER_DEPRECATED_WARNING, CommandLineExit, parse_server_args
-from map_server.console import error_line, use_roscpp_console
 from map_server.messages import grid_message
+from roscpp_console.handler import use_roscpp_console
+from roscpp_console.line_format import error_line
 
 VALID_TIME_POLL_S = 0.01   # wall time between looks at the clock while ROS time is still 0
 

@@ -10,9 +10,9 @@ import rospy
 from geometry_msgs.msg import Twist
 from std_srvs.srv import Empty
 
+from roscpp_console.handler import use_roscpp_console
 from turtlesim.core.draw_square import SquareDriver
 from turtlesim.msg import Pose
-from turtlesim.ros.console import use_roscpp_console
 from turtlesim.ros.log import ros_log
 
 NODE_NAME = 'draw_square'

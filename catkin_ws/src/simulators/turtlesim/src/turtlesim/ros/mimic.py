@@ -12,8 +12,8 @@ follower drive forwards.
 import rospy
 from geometry_msgs.msg import Twist
 
+from roscpp_console.handler import use_roscpp_console
 from turtlesim.msg import Pose
-from turtlesim.ros.console import use_roscpp_console
 
 NODE_NAME = 'turtle_mimic'
 

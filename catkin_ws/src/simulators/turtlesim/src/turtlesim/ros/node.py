@@ -39,6 +39,7 @@ import rospy
 from std_srvs.srv import Empty, EmptyResponse
 
 from master_reconnect import keep_registered
+from roscpp_console.handler import use_roscpp_console
 from sim_clock import warn_if_clock_missing
 from stop_request import StopRequest
 from stop_request.closed_topic import shutting_down
@@ -48,7 +49,6 @@ from turtlesim.core.pending_calls import CallAbandoned, PendingCalls
 from turtlesim.core.simulation import TurtleSim
 from turtlesim.core.ticker import run_ticks
 from turtlesim.ros.canvas import CanvasPublisher
-from turtlesim.ros.console import use_roscpp_console
 from turtlesim.ros.log import ros_log
 from turtlesim.ros.service import RoscppStyleService, ServiceFailure
 from turtlesim.ros.turtle import TurtleInterfaces

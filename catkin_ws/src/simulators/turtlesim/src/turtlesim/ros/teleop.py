@@ -13,8 +13,8 @@ import sys
 import rospy
 from geometry_msgs.msg import Twist
 
+from roscpp_console.handler import use_roscpp_console
 from turtlesim.core.teleop_keys import BANNER, DEFAULT_SCALE_ANGULAR, DEFAULT_SCALE_LINEAR, KEY_QUIT, command_for_key
-from turtlesim.ros.console import use_roscpp_console
 from turtlesim.tools.terminal import RawTerminal
 
 POLL_INTERVAL_S = 0.1

@@ -1,4 +1,4 @@
-"""Console lines in roscpp's format for the replica's nodes (imports rospy), as the original C++ nodes print.
+"""Console lines in roscpp's format for rospy nodes (imports rospy), as the original C++ nodes print them.
 
 rospy's console handler (rosgraph.roslogging.RosStreamHandler, set up by rospy.init_node from
 python_logging.conf) is swapped for RoscppConsoleHandler on the `rosout` logger. Only the terminal output
@@ -13,7 +13,7 @@ import time
 import rospy
 from rosgraph.roslogging import RosStreamHandler
 
-from turtlesim.core.console import DEFAULT_FORMAT, SEVERITIES, console_line, stamp_text
+from roscpp_console.line_format import DEFAULT_FORMAT, SEVERITIES, console_line, stamp_text
 
 COLORS = {'DEBUG': '\033[32m', 'WARNING': '\033[33m', 'ERROR': '\033[31m', 'CRITICAL': '\033[31m'}
 """rosconsole's colours (green, yellow, red), used only when the stream is a terminal."""

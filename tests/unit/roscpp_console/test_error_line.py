@@ -1,7 +1,7 @@
 """The ERROR line map_server and map_saver print before they contact the master, in roscpp's format."""
 import re
 
-from map_server.console import error_line
+from roscpp_console.line_format import error_line
 
 
 def test_an_early_error_is_a_roscpp_console_line_on_stderr(capsys, monkeypatch):

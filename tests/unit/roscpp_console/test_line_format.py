@@ -1,5 +1,5 @@
 """roscpp's console line format: padded severities, nanosecond stamps, ROSCONSOLE_FORMAT tokens."""
-from turtlesim.core.console import DEFAULT_FORMAT, SEVERITIES, console_line, stamp_text
+from roscpp_console.line_format import DEFAULT_FORMAT, SEVERITIES, console_line, stamp_text
 
 
 def test_stamps_have_nine_digits_of_nanoseconds():
