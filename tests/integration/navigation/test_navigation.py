@@ -13,7 +13,7 @@ from roslab import wait_for_service, wait_for_topic, wait_until
 from . import world_map
 
 HERE = Path(__file__).resolve().parent
-REAL_TIME_FACTOR = 5
+REAL_TIME_FACTOR = 10
 SPAWN = (-2.0, -0.5)
 GOAL_TIMEOUT_SIM_S = 90.0
 PENDING, ACTIVE, PREEMPTED, SUCCEEDED, ABORTED = 0, 1, 2, 3, 4
@@ -25,11 +25,12 @@ def cells():
 
 
 @pytest.fixture(scope="module")
-def nav(ros_master, probe, cells, tmp_path_factory):
+def nav(ros_master, cells, tmp_path_factory):
     map_file = world_map.write_map(tmp_path_factory.mktemp("map"), "map", cells)
     ros_master.roslaunch("turtlebot3_gazebo", "turtlebot3_world.launch", "gui:=false", "model:=waffle",
                          f"real_time_factor:={REAL_TIME_FACTOR}")
     wait_for_service(ros_master.uri, "/gazebo/get_model_state", 60)
+    probe = ros_master.probe()   # started after the launch set /use_sim_time: its now() and sleep_sim are sim time
     ros_master.start(["roslaunch", "--wait", str(HERE / "navigation.launch"), f"map_file:={map_file}",
                       f"initial_pose_x:={SPAWN[0]}", f"initial_pose_y:={SPAWN[1]}"], "navigation")
     wait_for_topic(ros_master.uri, "/move_base/status", 120)
@@ -38,11 +39,6 @@ def nav(ros_master, probe, cells, tmp_path_factory):
                         ("/amcl_pose", "geometry_msgs/PoseWithCovarianceStamped")):
         probe.subscribe(topic, kind)
     return probe
-
-
-KNOWN_BUG = ("on an idle machine the goal at the pillar's centre ends in 10 s of sim time, not after the "
-             "5 x 5 s of planning the recoveries take, and the robot has moved toward it (the next test's first "
-             "goal is then reached at once): to fix with the goal-reaching tests (issue 30)")
 
 
 class Goals:
@@ -85,14 +81,12 @@ def test_a_zero_quaternion_is_aborted_at_once(nav):
     assert waited < 1.0
 
 
-@pytest.mark.skip(reason=KNOWN_BUG)
 def test_a_goal_inside_a_pillar_is_aborted_after_the_recoveries(nav):
     status, text, waited = wait_result(nav, send_goal(nav, 0.0, 0.0), 120)
     assert (status, text) == (ABORTED, "Failed to find a valid plan. Even after executing recovery behaviors.")
     assert waited >= 5 * 5.0   # planner_patience before each recovery and after the last
 
 
-@pytest.mark.skip(reason=KNOWN_BUG)
 def test_a_new_goal_preempts_and_cancel_stops_the_robot(nav):
     first = send_goal(nav, -0.55, -0.55)
     nav.sleep_sim(3.0, 60)
