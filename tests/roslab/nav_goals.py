@@ -140,15 +140,12 @@ def wait_result(probe, goal_id, timeout_sim_s=GOAL_TIMEOUT_SIM_S):
     return found[0]["msg"]["status"]["status"], found[0]["msg"]["status"]["text"], found[0]["ros"] - start
 
 
-def drive_to(probe, goal, while_driving=None):
+def drive_to(probe, goal):
     """Send one goal (x, y, yaw, ...) and measure the run: status, text, sim seconds, the pose move_base last
-    reported, the /odom path length and the closest the LiDAR saw anything to the body. `while_driving()` is
-    called once the goal is sent."""
+    reported, the /odom path length and the closest the LiDAR saw anything to the body."""
     for topic in ("/odom", "/scan", "/move_base/feedback"):
         probe.take(topic)
     goal_id = send_goal(probe, goal[0], goal[1], goal[2])
-    if while_driving is not None:
-        while_driving()
     status, text, waited = wait_result(probe, goal_id)
     odom = probe.take("/odom")
     feedback = [e["msg"]["feedback"]["base_position"]["pose"] for e in probe.take("/move_base/feedback")
