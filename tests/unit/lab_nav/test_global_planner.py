@@ -82,3 +82,15 @@ def test_tolerance_ends_the_path_near_an_unreachable_goal():
     path = plan(costs, (5, 5), (20, 20), 0.05, tolerance_cells=6)
     end = path[-1]
     assert costs[end[1], end[0]] == 0 and max(abs(end[0] - 20), abs(end[1] - 20)) <= 6
+
+
+def test_a_goal_in_a_blocked_cell_fails_without_a_search(monkeypatch):
+    costs = np.zeros((40, 40), np.uint8)
+    costs[18:23, 18:23] = LETHAL
+    costs[17, 20] = INSCRIBED
+
+    def no_search(*_args):
+        raise AssertionError("searched")
+    monkeypatch.setattr(global_planner, "_search", no_search)
+    assert plan(costs, (5, 5), (20, 20), 0.05) is None
+    assert plan(costs, (5, 5), (20, 17), 0.05) is None

@@ -107,3 +107,15 @@ def test_a_lethal_cell_in_the_rotation_blocks_it():
     else:
         raise AssertionError("no cell is swept by the turn only")
     assert not planner.compute((0.0, 0.0, 0.0), (0.0, 0.0), costmap).valid
+
+
+def test_a_robot_facing_across_its_plan_does_not_back_away_from_it():
+    """The forward point lies ahead in the direction of travel, so backing away from where the plan goes does not
+    score as aligned with it (with the point always ahead of the heading, a robot facing north above a plan going
+    west backed away south, the replanned path followed it, and it reversed for 18 s in turtlebot3_world)."""
+    planner = DwaPlanner(PARAMS, FOOTPRINT)
+    goal = (-1.2, 0.0, np.pi)
+    planner.set_plan(_straight_plan(goal), goal)
+    command = planner.compute((0.0, 0.0, np.pi / 2), (0.0, 0.0), _local_costmap())
+    end = command.trajectory[-1]
+    assert np.hypot(end[0] - goal[0], end[1] - goal[1]) < 1.2

@@ -6,8 +6,8 @@ trajectories whose footprint touches a lethal cell or whose centre comes within 
 (costmap >= 253, or off the costmap), and keeps the cheapest by
 
   path_distance_bias  * (distance of the end point to the global plan, m)
-+ path_distance_bias  * (distance of the point forward_point_distance ahead of the end pose to the plan, m;
-                         left out within forward_point_distance of the goal)
++ path_distance_bias  * (distance of the point forward_point_distance ahead of the end pose, in the direction of
+                         travel, to the plan, m; left out within forward_point_distance of the goal)
 + goal_distance_bias  * (distance of the trajectory to the local goal, m)
 + occdist_scale       * (highest cost the footprint meets along the trajectory).
 
@@ -15,6 +15,10 @@ The local goal is the last plan point inside the local costmap. One deliberate d
 the goal term takes the trajectory's closest approach to the local goal rather than its end point, so near the
 goal a trajectory through it is not scored as overshooting; the path term then favours the one that ends there,
 which lets the robot settle within xy_goal_tolerance (0.05 m for turtlebot3) instead of dithering around it.
+A second one: the forward point of a reversing trajectory lies behind the robot (the original puts it ahead of
+the heading whatever the direction), so backing away from the plan's direction does not score as aligned with
+it; with turtlebot3's min_vel_x -0.26 a robot facing across its plan otherwise reversed away from the goal while
+the replanned path followed it (18 s in turtlebot3_world).
 Velocities (v, w) with |v| < min_vel_trans and |w| < min_vel_theta are never commanded (dwa's rule).
 
 Within xy_goal_tolerance of the goal it stops (within the acceleration limits) and turns in place toward the
@@ -171,8 +175,8 @@ class DwaPlanner:
         total = p.path_distance_bias * path_cost + p.goal_distance_bias * goal_cost + \
             p.occdist_scale * occ.max(axis=1)
         if np.hypot(pose[0] - self._goal[0], pose[1] - self._goal[1]) > p.forward_point_distance:
-            forward = ends[:, :2] + p.forward_point_distance * np.column_stack((np.cos(ends[:, 2]),
-                                                                                np.sin(ends[:, 2])))
+            ahead = p.forward_point_distance * np.where(commands[:, 0] < 0.0, -1.0, 1.0)[:, None]
+            forward = ends[:, :2] + ahead * np.column_stack((np.cos(ends[:, 2]), np.sin(ends[:, 2])))
             total = total + p.path_distance_bias * _distance_to(forward, plan)
         total[~valid] = np.inf
         best = int(np.argmin(total))

@@ -1,0 +1,121 @@
+"""Navigation benchmarks for scripts/bench (sim-time figures from a real run; not a test, never asserted).
+
+    source scripts/env.sh && python3 tests/bench/nav_bench.py [goals [real_time_factor]]
+
+One session: turtlebot3_world.launch at FACTOR (headless) and tests/integration/navigation's navigation.launch
+(map_server on a map drawn from the world, amcl, move_base with turtlebot3's waffle parameters). Measures:
+- amcl: /initialpose 0.3 m and 15 deg off the true pose, the robot driven 2 m straight (0.2 m/s on /cmd_vel),
+  then /amcl_pose against /gazebo/get_model_state (targets 0.05 m and 3 deg);
+- GOALS seeded random reachable goals (roslab.nav_goals, seed 30) through the move_base action: the share
+  reached ("Goal reached.", target 0.95), the path driven over the shortest grid path (median and worst; and
+  the worst over the cheapest path by navfn's cost, which keeps away from obstacles; target 1.2 for each),
+  the median time to the goal over the shortest path at the speed limit (0.26 m/s; target 2.0, a choice:
+  the robot turns toward each goal and slows near it), the closest the LiDAR saw anything to the body;
+- CPU of amcl (target 15 % of a core) and move_base (25 %) at real time, measured as CPU seconds per second of
+  sim time over the goals: the nodes' work is paced by sim time (scans, 10 Hz control, 5 Hz planning).
+`run()` returns the rows [(name, value, unit, target, comparison)] for scripts/bench's table.
+"""
+import math
+import os
+import statistics
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from integration.navigation import world_map  # noqa: E402
+
+from roslab import RosMaster, nav_goals, wait_for_param, wait_for_service, wait_for_topic  # noqa: E402
+from roslab.graph import node_pid  # noqa: E402
+from roslab.processes import cpu_seconds  # noqa: E402
+
+NAVIGATION_LAUNCH = Path(__file__).resolve().parents[1] / "integration" / "navigation" / "navigation.launch"
+FACTOR = 10
+SPAWN = (-2.0, -0.5)
+GOALS, SEED = 40, 30
+MAX_VEL_M_S = 0.26
+AMCL_OFFSET = (0.3, math.radians(15.0))
+DRIVE_M_S, DRIVE_SIM_S = 0.2, 10.0
+TOPICS = (("/move_base/result", "move_base_msgs/MoveBaseActionResult"), ("/odom", "nav_msgs/Odometry"),
+          ("/scan", "sensor_msgs/LaserScan"), ("/move_base/feedback", "move_base_msgs/MoveBaseActionFeedback"),
+          ("/amcl_pose", "geometry_msgs/PoseWithCovarianceStamped"))
+
+
+def start_navigation(master, cells, factor):
+    map_file = world_map.write_map(master.workdir, "map", cells)
+    master.roslaunch("turtlebot3_gazebo", "turtlebot3_world.launch", "gui:=false", "model:=waffle",
+                     f"real_time_factor:={factor}")
+    wait_for_service(master.uri, "/gazebo/get_model_state", 60)
+    wait_for_param(master.uri, "/use_sim_time")
+    master.start(["roslaunch", "--wait", str(NAVIGATION_LAUNCH), f"map_file:={map_file}",
+                  f"initial_pose_x:={SPAWN[0]}", f"initial_pose_y:={SPAWN[1]}"], "navigation")
+    wait_for_topic(master.uri, "/move_base/status", 120)
+    probe = master.probe()
+    for topic, kind in TOPICS:
+        probe.subscribe(topic, kind)
+    return probe
+
+
+def random_goal_runs(master, probe, cells, count):
+    costs = nav_goals.global_costs(world_map.GEOMETRY, cells)
+    here = nav_goals.true_pose()
+    goals = nav_goals.random_goals(cells, costs, world_map.GEOMETRY, here[:2], count, SEED)
+    pids = {name: node_pid(master.uri, name) for name in ("/amcl", "/move_base")}
+    cpu_start, sim_start, wall_start = {n: cpu_seconds(p) for n, p in pids.items()}, probe.now(), time.monotonic()
+    runs = []
+    for k, goal in enumerate(goals, 1):
+        run = nav_goals.drive_to(probe, goal)
+        runs.append(run)
+        print(f"    goal {k}/{count} ({goal[0]:.2f}, {goal[1]:.2f}): {run['text'] or run['status']} in "
+              f"{run['waited']:.1f} s, path {run['driven']:.2f} m / shortest {goal[3]:.2f} m, clearance "
+              f"{run['clearance']:.3f} m", flush=True)
+    sim_s = probe.now() - sim_start
+    cpu = {n: 100.0 * (cpu_seconds(p) - cpu_start[n]) / sim_s for n, p in pids.items()}
+    print(f"    {count} goals: {sim_s:.0f} s of sim time in {time.monotonic() - wall_start:.0f} s wall; CPU per sim "
+          f"second: amcl {cpu['/amcl']:.0f} %, move_base {cpu['/move_base']:.0f} %", flush=True)
+    return goals, runs, cpu
+
+
+def _median(values):
+    """The median; +inf (a target missed) when no goal was reached."""
+    values = list(values)
+    return statistics.median(values) if values else math.inf
+
+
+def run(goals=GOALS, factor=FACTOR):
+    cells = world_map.world_cells("turtlebot3_world", SPAWN)
+    master = RosMaster(Path(tempfile.mkdtemp(prefix="nav_bench_")))
+    os.environ["ROS_MASTER_URI"] = master.uri   # this process calls /gazebo/get_model_state itself
+    try:
+        probe = start_navigation(master, cells, factor)
+        amcl_m, amcl_rad = nav_goals.amcl_error_after_drive(probe, *AMCL_OFFSET, DRIVE_M_S, DRIVE_SIM_S)
+        goal_list, runs, cpu = random_goal_runs(master, probe, cells, goals)
+    finally:
+        master.shutdown()
+    reached = [r for r in runs if r["text"] == "Goal reached."]
+    print(f"    amcl after 2 m: {amcl_m:.3f} m, {math.degrees(amcl_rad):.2f} deg", flush=True)
+    pairs = [(g, r) for g, r in zip(goal_list, runs) if r["text"] == "Goal reached."]
+    return [
+        ("navigation: random goals reached (turtlebot3_world)", len(reached) / len(runs), "", 0.95, ">="),
+        ("navigation: path driven / shortest grid path, median",
+         _median(r["driven"] / g[3] for g, r in pairs), "", 1.2, "<="),
+        ("navigation: path driven / shortest grid path, worst",
+         max((r["driven"] / g[3] for g, r in pairs), default=math.inf), "", 1.2, "<="),
+        ("navigation: path driven / cheapest grid path (navfn's cost), worst",
+         max((r["driven"] / g[4] for g, r in pairs), default=math.inf), "", 1.2, "<="),
+        ("navigation: time to goal / shortest path at 0.26 m/s, median",
+         _median(r["waited"] / (g[3] / MAX_VEL_M_S) for g, r in pairs), "", 2.0, "<="),
+        ("navigation: closest approach of anything to the body", min(r["clearance"] for r in runs), "m", 0.02,
+         ">="),
+        ("amcl: position error after 2 m from 0.3 m / 15 deg off", amcl_m, "m", 0.05, "<="),
+        ("amcl: yaw error after 2 m from 0.3 m / 15 deg off", math.degrees(amcl_rad), "deg", 3.0, "<="),
+        ("amcl CPU at real time (per sim second, navigating)", cpu["/amcl"], "%", 15.0, "<="),
+        ("move_base CPU at real time (per sim second, navigating)", cpu["/move_base"], "%", 25.0, "<="),
+    ]
+
+
+if __name__ == "__main__":
+    for row in run(*(int(arg) for arg in sys.argv[1:3])):
+        print(row)
