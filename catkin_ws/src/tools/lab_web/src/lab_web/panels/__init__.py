@@ -3,6 +3,7 @@ its page module static/js/panels/<name>.js, and one line in PANELS (and one in t
 from lab_web.panels.camera import CameraPanel
 from lab_web.panels.drive import DrivePanel
 from lab_web.panels.graph import GraphPanel
+from lab_web.panels.map import MapPanel
 from lab_web.panels.robot import RobotPanel
 from lab_web.panels.services import ServicesPanel
 from lab_web.panels.turtlesim import TurtlesimPanel
@@ -10,6 +11,7 @@ from lab_web.panels.world import WorldPanel
 
 PANELS = (
     WorldPanel,
+    MapPanel,
     RobotPanel,
     TurtlesimPanel,
     GraphPanel,
