@@ -1,10 +1,13 @@
-"""The page as RViz's Map display and fixed frame, in a real headless Chromium: /map drawn cell by cell (unknown
-grey, free white, occupied black) where its origin and resolution put it, and the robot and its LiDAR sweep placed
-through map -> odom -> base_footprint. No simulator: a probe node publishes the map, the transforms, odometry and
-one scan, so every pixel's place is known exactly."""
+"""The page as RViz's Map display, fixed frame and publishing tools, in a real headless Chromium: /map drawn cell by
+cell (unknown grey, free white, occupied black) where its origin and resolution put it, the robot and its LiDAR
+sweep placed through map -> odom -> base_footprint, and drags with "2D Pose Estimate", "2D Nav Goal" and "Publish
+Point" publishing what RViz would. No simulator: a probe node publishes the map, the transforms, odometry and one
+scan, so every pixel's place is known exactly."""
 import math
 
 import pytest
+from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.by import By
 
 from roslab import wait_until
 
@@ -17,6 +20,10 @@ ODOM_ROBOT = (0.5, 0.0)
 SCAN_RANGE_M = 1.0
 BLACK, WHITE, UNKNOWN = (0, 0, 0), (255, 255, 255), (0x70, 0x89, 0x86)
 ROBOT_RGB, SCAN_RGB = (0x1F, 0x4E, 0xA3), (0xE0, 0x30, 0x30)
+TOOL_TOPICS = {"/initialpose": "geometry_msgs/PoseWithCovarianceStamped",
+               "/move_base_simple/goal": "geometry_msgs/PoseStamped", "/clicked_point": "geometry_msgs/PointStamped",
+               "/move_base/cancel": "actionlib_msgs/GoalID"}
+RVIZ_COVARIANCE = {0: 0.25, 7: 0.25, 35: 0.06853891945200942}
 
 
 def quaternion(yaw):
@@ -70,6 +77,9 @@ def page(ros_master, browser):
 
     wait_until(odom_placed, 10, "the page to place odom in the map frame", interval_s=0.2)
     browser.fixed_frame_before_the_map = before_the_map
+    browser.probe = probe
+    for topic, kind in TOOL_TOPICS.items():
+        probe.subscribe(topic, kind)
     return browser
 
 
@@ -110,3 +120,64 @@ def test_the_robot_and_its_scan_are_placed_through_map_odom_base_footprint(page)
     assert not close_to(pixel(page, *ODOM_ROBOT), ROBOT_RGB)     # not where odom alone would put it
     hit = in_map(ODOM_ROBOT[0] + SCAN_RANGE_M, ODOM_ROBOT[1])    # 1 m ahead: (1.0, 2.0) in the map
     assert close_to(pixel(page, *hit), SCAN_RGB)
+
+
+def drag(page, tool, start, end=None):
+    """Pick `tool` (a button id) and drag on the top view from fixed-frame point `start` to `end` (a click
+    without `end`); returns the canvas's metres per pixel."""
+    canvas = page.driver.find_element(By.ID, "world")
+    middle = page.script("const r = arguments[0].getBoundingClientRect(); return [r.width / 2, r.height / 2];",
+                         canvas)
+
+    def offset(x, y):
+        px, py = page.script("return labView.worldToPixel(arguments[0], arguments[1]);", x, y)
+        return round(px - middle[0]), round(py - middle[1])
+
+    page.driver.find_element(By.ID, tool).click()
+    actions = ActionChains(page.driver).move_to_element_with_offset(canvas, *offset(*start)).click_and_hold()
+    if end is not None:
+        actions = actions.move_by_offset(5, 5).move_to_element_with_offset(canvas, *offset(*end))
+    actions.release().perform()
+    return 1.0 / abs(offset(1.0, 0.0)[0] - offset(0.0, 0.0)[0])
+
+
+def one_message(page, topic):
+    return page.probe.wait_for_message(topic, 5)
+
+
+def yaw_of(orientation):
+    return 2.0 * math.atan2(orientation["z"], orientation["w"])
+
+
+def test_2d_pose_estimate_publishes_initialpose_as_rviz_does(page):
+    page.probe.take("/initialpose")
+    metres_per_pixel = drag(page, "tool-initial-pose", (0.5, 0.0), (0.5, 1.0))
+    message = one_message(page, "/initialpose")
+    assert message["header"]["frame_id"] == "map"
+    pose = message["pose"]["pose"]
+    assert math.hypot(pose["position"]["x"] - 0.5, pose["position"]["y"]) <= 2 * metres_per_pixel
+    assert yaw_of(pose["orientation"]) == pytest.approx(math.pi / 2, abs=0.02)
+    covariance = message["pose"]["covariance"]
+    assert covariance == [RVIZ_COVARIANCE.get(i, 0.0) for i in range(36)]
+    assert not page.driver.find_element(By.ID, "tool-initial-pose").get_attribute("class").count("active")
+
+
+def test_2d_nav_goal_publishes_the_goal_in_the_map_frame_facing_the_drag(page):
+    page.probe.take("/move_base_simple/goal")
+    metres_per_pixel = drag(page, "tool-nav-goal", (0.0, 0.5), (-1.0, 0.5))
+    message = one_message(page, "/move_base_simple/goal")
+    assert message["header"]["frame_id"] == "map"
+    assert math.hypot(message["pose"]["position"]["x"], message["pose"]["position"]["y"] - 0.5) <= 2 * metres_per_pixel
+    assert abs(yaw_of(message["pose"]["orientation"])) == pytest.approx(math.pi, abs=0.02)
+
+
+def test_publish_point_and_cancel_goal(page):
+    for topic in ("/clicked_point", "/move_base/cancel"):
+        page.probe.take(topic)
+    metres_per_pixel = drag(page, "tool-publish-point", (0.2, 0.3))
+    point = one_message(page, "/clicked_point")
+    assert point["header"]["frame_id"] == "map"
+    assert math.hypot(point["point"]["x"] - 0.2, point["point"]["y"] - 0.3) <= 2 * metres_per_pixel
+    page.driver.find_element(By.ID, "cancel-goal").click()
+    assert one_message(page, "/move_base/cancel")["id"] == ""
+    assert page.script("return labView.errors;") == []

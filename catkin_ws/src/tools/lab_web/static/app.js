@@ -12,10 +12,11 @@ import graph from './js/panels/graph.js';
 import map from './js/panels/map.js';
 import robot from './js/panels/robot.js';
 import services from './js/panels/services.js';
+import tools from './js/panels/tools.js';
 import turtlesim from './js/panels/turtlesim.js';
 import world from './js/panels/world.js';
 
-const PANELS = [world, map, robot, turtlesim, graph, camera, drive, services];
+const PANELS = [world, map, robot, turtlesim, graph, camera, drive, services, tools];
 const RECONNECT_MS = 1000;
 
 const handlers = {hello: [onHello], reply: [onReply], error: [onError]};   // frame type -> handlers

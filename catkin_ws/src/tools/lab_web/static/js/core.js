@@ -26,6 +26,8 @@ export const app = {
   turtleImageSeq: 0,
   view: null,                // world view transform; changes only with bounds (or a robot leaving it)
   mouse: null,               // box tool: the press in progress on the world canvas
+  tool: null,                // the tools panel's tool in use (null: the default, moving boxes)
+  fixed: null,               // latest `fixed` frame: the fixed frame and odom's pose in it
   selectedModel: null,
   selectedTopic: null,
   cameraOn: false,

@@ -6,6 +6,7 @@ from lab_web.panels.graph import GraphPanel
 from lab_web.panels.map import MapPanel
 from lab_web.panels.robot import RobotPanel
 from lab_web.panels.services import ServicesPanel
+from lab_web.panels.tools import ToolsPanel
 from lab_web.panels.turtlesim import TurtlesimPanel
 from lab_web.panels.world import WorldPanel
 
@@ -18,6 +19,7 @@ PANELS = (
     CameraPanel,
     DrivePanel,
     ServicesPanel,
+    ToolsPanel,
 )
 
 

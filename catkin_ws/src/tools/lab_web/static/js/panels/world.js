@@ -40,6 +40,7 @@ function updateVisibility() {
   const shown = hasWorld();
   const wasHidden = section.hidden;
   section.hidden = !shown;
+  $('reset-world').hidden = !shown;     // tb3_sim's /gazebo/reset_world: nothing to reset on turtlesim
   if (wasHidden && shown) requestRender('world');
   return shown;
 }
@@ -246,7 +247,7 @@ function setup() {
   addLayer(60, drawDraggedModel);
   addVisibility(updateVisibility);
   canvas.addEventListener('mousedown', (event) => {
-    if (event.button !== 0) return;
+    if (event.button !== 0 || app.tool) return;   // a tool of the tools panel takes the press
     event.preventDefault();               // no text selection while dragging
     const point = canvasPoint(event);
     app.mouse = {start: point, current: point, model: modelAt(...point), dragging: false};
@@ -281,7 +282,7 @@ function setup() {
   });
   // Hover feedback: a hand over models, a crosshair over the floor.
   canvas.addEventListener('mousemove', (event) => {
-    if (!app.mouse) canvas.style.cursor = modelAt(...canvasPoint(event)) ? 'grab' : '';
+    if (!app.mouse && !app.tool) canvas.style.cursor = modelAt(...canvasPoint(event)) ? 'grab' : '';
   });
   canvas.addEventListener('contextmenu', (event) => {
     const model = modelAt(...canvasPoint(event));
