@@ -2,7 +2,7 @@
  * The camera panel: a thumbnail of the robot's camera while "Show camera" is ticked and the page is visible
  * (the server subscribes to the camera only while some page asks).
  */
-import {$, app, send} from '../core.js';
+import {$, addVisibility, app, send} from '../core.js';
 
 function onCamera(frame) {
   if (!app.cameraOn) return;     // a frame that was on its way when the camera was switched off
@@ -12,7 +12,14 @@ function onCamera(frame) {
   $('camera-note').hidden = true;
 }
 
+/** The camera is the robot's: no toggle without one (turtlesim has none). */
+function updateVisibility() {
+  $('camera-toggle').closest('.camera').hidden = !app.robotSeen;
+  return false;
+}
+
 function setup() {
+  addVisibility(updateVisibility);
   const toggle = $('camera-toggle');
   toggle.checked = false;       // browsers may restore a checked box on reload
   toggle.addEventListener('change', () => {

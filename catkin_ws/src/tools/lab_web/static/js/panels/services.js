@@ -10,6 +10,7 @@ const form = {
   loadedFor: null,           // service whose request fields are shown
   retry: null,               // service whose fields failed while it was not running: retry once it appears
   listed: new Set(),         // service names in the latest graph frame
+  graphSeen: false,          // a graph frame came: `listed` is what runs
 };
 
 function addServiceOptions(services) {
@@ -31,23 +32,38 @@ function addServiceOptions(services) {
   }
 }
 
-/** The graph lists the services: offer them, and ask again for fields that failed before the service ran. */
+/** The graph lists the services: offer them, and ask for the fields of the chosen one once it runs. */
 function onGraph(frame) {
   const services = (frame.services || []).slice().sort((a, b) => (a.name < b.name ? -1 : a.name > b.name ? 1 : 0));
   addServiceOptions(services);
   form.listed = new Set(services.map((s) => s.name));
+  form.graphSeen = true;
   if (form.retry === $('service-name').value && form.listed.has(form.retry)) {
     form.retry = null;
     loadServiceFields();
+  } else if (form.retry) {
+    showWaiting(form.retry);
   }
 }
 
+/** A service that no node offers yet is not an error (turtlesim has no /move_service; a student starts the
+ *  Week 4 server after opening the page): the form says what it waits for and asks once the graph lists it. */
 function loadServiceFields() {
   const service = $('service-name').value;
   form.loadedFor = null;
   $('service-fields').replaceChildren();
   clearServiceReply();
+  if (!form.listed.has(service)) {
+    form.retry = service;
+    showWaiting(service);
+    return;
+  }
   request('service_fields', {service}, {service});
+}
+
+function showWaiting(service) {
+  $('service-reply').textContent = form.graphSeen ? `${service} is not offered by any node yet: start the node that `
+    + 'offers it, or pick another service' : '';
 }
 
 function showServiceFields(reply, context) {
