@@ -1,6 +1,7 @@
-"""The page as RViz's Map display, fixed frame and publishing tools, in a real headless Chromium: /map drawn cell by
-cell (unknown grey, free white, occupied black) where its origin and resolution put it, the robot and its LiDAR
-sweep placed through map -> odom -> base_footprint, and drags with "2D Pose Estimate", "2D Nav Goal" and "Publish
+"""The page as RViz's Map display, fixed frame, navigation displays and publishing tools, in a real headless
+Chromium: /map drawn cell by cell (unknown grey, free white, occupied black) where its origin and resolution put it,
+the robot and its LiDAR sweep placed through map -> odom -> base_footprint, a costmap cell, a plan, a particle's
+arrow and amcl's covariance ellipse where they are, and drags with "2D Pose Estimate", "2D Nav Goal" and "Publish
 Point" publishing what RViz would. No simulator: a probe node publishes the map, the transforms, odometry and one
 scan, so every pixel's place is known exactly."""
 import math
@@ -181,3 +182,56 @@ def test_publish_point_and_cancel_goal(page):
     page.driver.find_element(By.ID, "cancel-goal").click()
     assert one_message(page, "/move_base/cancel")["id"] == ""
     assert page.script("return labView.errors;") == []
+
+
+PARTICLE, PLAN_Y, LETHAL_CELL_AT = (2.0, 0.5, 0.0), 2.5, (2.05, -0.85)
+AMCL_POSE, AMCL_SIGMAS = (-0.5, 1.5, -math.pi / 2), (0.2, 0.1)
+PARTICLE_RGB, PLAN_RGB, LETHAL_OVER_WHITE = (255, 25, 0), (0, 176, 0), (255, 77, 255)
+
+
+def stamped_pose(x, y, yaw):
+    return {"position": {"x": x, "y": y}, "orientation": quaternion(yaw)}
+
+
+@pytest.fixture(scope="module")
+def navigation(page):
+    probe = page.probe
+    probe.publish("/particlecloud", "geometry_msgs/PoseArray", {"header": {"frame_id": "map"},
+                                                                "poses": [stamped_pose(*PARTICLE)]})
+    probe.publish("/move_base/NavfnROS/plan", "nav_msgs/Path", {"header": {"frame_id": "map"}, "poses": [
+        {"pose": stamped_pose(x, PLAN_Y, 0.0)} for x in (-0.5, 0.5)]})
+    covariance = [0.0] * 36
+    covariance[0], covariance[7] = AMCL_SIGMAS[0] ** 2, AMCL_SIGMAS[1] ** 2
+    probe.publish("/amcl_pose", "geometry_msgs/PoseWithCovarianceStamped", {"header": {"frame_id": "map"}, "pose": {
+        "pose": stamped_pose(*AMCL_POSE), "covariance": covariance}})
+    probe.publish("/move_base/global_costmap/costmap", "nav_msgs/OccupancyGrid", {
+        "header": {"frame_id": "map"}, "info": {"resolution": RESOLUTION, "width": 4, "height": 4, "origin": {
+            "position": {"x": 2.0, "y": -0.9}, "orientation": {"w": 1.0}}}, "data": [100] + [0] * 15})
+    wait_until(lambda: page.script("return labView.costmaps >= 1 && !!labView.nav && !!labView.nav.amcl && "
+                                   "!!labView.nav.particles && !!(labView.nav.plans || {}).global;"), 10,
+               "the page to show the navigation displays")
+    return page
+
+
+def test_a_particle_is_an_arrow_and_a_plan_a_line_where_they_are(navigation):
+    x, y, _ = PARTICLE
+    assert close_to(pixel(navigation, x + 0.2, y), PARTICLE_RGB)          # along the arrow's 0.3 m shaft
+    assert not close_to(pixel(navigation, x - 0.1, y), PARTICLE_RGB)      # nothing behind it
+    assert close_to(pixel(navigation, 0.0, PLAN_Y), PLAN_RGB)
+
+
+def test_a_lethal_costmap_cell_is_rvizs_purple_over_the_map(navigation):
+    assert close_to(pixel(navigation, *LETHAL_CELL_AT), LETHAL_OVER_WHITE)
+    assert pixel(navigation, LETHAL_CELL_AT[0] + 0.1, LETHAL_CELL_AT[1]) == WHITE   # a free cost: transparent
+
+
+def test_the_covariance_ellipse_is_one_standard_deviation_along_each_axis(navigation):
+    x, y, _ = AMCL_POSE
+    sx, sy = AMCL_SIGMAS
+    assert pixel(navigation, x + 0.8 * sx, y) != WHITE and pixel(navigation, x + 1.25 * sx, y) == WHITE
+    assert pixel(navigation, x, y + 0.8 * sy) != WHITE and pixel(navigation, x, y + 1.4 * sy) == WHITE
+    assert page_errors(navigation) == []
+
+
+def page_errors(page):
+    return page.script("return labView.errors;") + page.console_errors()

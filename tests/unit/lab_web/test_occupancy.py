@@ -9,8 +9,17 @@ from lab_web.occupancy import UNKNOWN_RGB, grid_png
 
 
 def decoded(text):
-    image = cv2.imdecode(np.frombuffer(base64.b64decode(text), dtype=np.uint8), cv2.IMREAD_COLOR)
-    return cv2.cvtColor(image, cv2.COLOR_BGR2RGB)
+    image = cv2.imdecode(np.frombuffer(base64.b64decode(text), dtype=np.uint8), cv2.IMREAD_UNCHANGED)
+    return cv2.cvtColor(image, cv2.COLOR_BGRA2RGBA)[:, :, :3]
+
+
+def test_the_costmap_scheme_is_rvizs_free_clear_lethal_purple_inscribed_cyan():
+    image = cv2.imdecode(np.frombuffer(base64.b64decode(grid_png([0, 100, 99, 50], 4, 1, "costmap")), dtype=np.uint8),
+                         cv2.IMREAD_UNCHANGED)
+    rgba = cv2.cvtColor(image, cv2.COLOR_BGRA2RGBA)[0]
+    assert rgba[0][3] == 0
+    assert tuple(rgba[1]) == (255, 0, 255, 255) and tuple(rgba[2]) == (0, 255, 255, 255)
+    assert tuple(rgba[3]) == (127, 0, 128, 255)
 
 
 def test_free_occupied_unknown_and_partial_cells_get_rviz_colours_in_message_order():

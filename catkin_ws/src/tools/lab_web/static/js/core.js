@@ -23,7 +23,6 @@ export const app = {
   robotSeen: false,          // a state with a robot arrived: teleop drives "robot"
   turtlesim: null,           // latest `turtlesim` frame
   turtleImage: null,         // decoded pen canvas PNG
-  turtleImageSeq: 0,
   view: null,                // world view transform; changes only with bounds (or a robot leaving it)
   mouse: null,               // box tool: the press in progress on the world canvas
   tool: null,                // the tools panel's tool in use (null: the default, moving boxes)
@@ -158,4 +157,18 @@ export function isTypingTarget(el) {
 /** A key press meant for the page: not typed into a field, no modifier held. */
 export function isPageKey(event) {
   return !isTypingTarget(event.target) && !event.ctrlKey && !event.altKey && !event.metaKey;
+}
+
+const decoding = new Map();      // key -> sequence number of the newest image asked for
+
+/** Decodes a PNG given as base64 once and calls `done(image)`, unless a newer one under `key` came meanwhile. */
+export function decodePng(key, base64, done) {
+  const seq = (decoding.get(key) || 0) + 1;
+  decoding.set(key, seq);
+  const image = new Image();
+  image.onload = () => {
+    if (decoding.get(key) === seq) done(image);
+  };
+  image.onerror = () => addMessage(`could not decode the ${key} image`);
+  image.src = `data:image/png;base64,${base64}`;
 }

@@ -220,3 +220,19 @@ export function drawBody(context, body, x, y, fill, edge) {
 }
 
 addRenderer('world', drawWorld, () => !$('world-panel').hidden);
+
+/** An occupancy grid's picture (a pixel per cell, row 0 first) where its origin [x, y, yaw] and resolution put it:
+ *  flipped (row 0 at the lowest y), cells kept sharp as RViz draws them. */
+export function drawGridImage(context, image, grid, alpha = 1) {
+  const [x, y, yaw] = grid.origin;
+  const [px, py] = worldToPixel(x, y);
+  const scale = grid.resolution * currentView().scale;
+  context.save();
+  context.globalAlpha = alpha;
+  context.translate(px, py);
+  context.rotate(-(yaw || 0));
+  context.scale(scale, -scale);
+  context.imageSmoothingEnabled = false;
+  context.drawImage(image, 0, 0);
+  context.restore();
+}

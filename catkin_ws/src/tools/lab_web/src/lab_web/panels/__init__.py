@@ -4,6 +4,7 @@ from lab_web.panels.camera import CameraPanel
 from lab_web.panels.drive import DrivePanel
 from lab_web.panels.graph import GraphPanel
 from lab_web.panels.map import MapPanel
+from lab_web.panels.nav import NavPanel
 from lab_web.panels.robot import RobotPanel
 from lab_web.panels.services import ServicesPanel
 from lab_web.panels.tools import ToolsPanel
@@ -13,6 +14,7 @@ from lab_web.panels.world import WorldPanel
 PANELS = (
     WorldPanel,
     MapPanel,
+    NavPanel,
     RobotPanel,
     TurtlesimPanel,
     GraphPanel,

@@ -41,10 +41,11 @@ class Panel:
 
     @staticmethod
     def lacking(session, *versioned_frames):
-        """(type, content) of each (frame type, Versioned content) pair whose content page `session` lacks."""
+        """(type, content) of each (frame type, Versioned content[, key]) whose content page `session` lacks; the
+        key (the frame type when not given) names what the page was sent, for two frames of one type."""
         out = []
-        for kind, versioned in versioned_frames:
-            content = session.lacks(kind, versioned)
+        for kind, versioned, *key in versioned_frames:
+            content = session.lacks(key[0] if key else kind, versioned)
             if content is not None:
                 out.append((kind, content))
         return out

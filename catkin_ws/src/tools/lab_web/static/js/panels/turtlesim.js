@@ -2,7 +2,7 @@
  * The turtlesim panel: turtlesim's window on its own canvas (#turtlesim): the background, the pen trails from
  * turtlesim's ~canvas image (`canvas` frames) and the turtles (`turtlesim` frames).
  */
-import {$, addMessage, addRenderer, addVisibility, app, isNumber, labView, recordLatency, requestRender,
+import {$, addRenderer, addVisibility, app, decodePng, isNumber, labView, recordLatency, requestRender,
   updatePanels} from '../core.js';
 
 const TURTLE_PX = 500;                  // turtlesim's pen canvas is 500 x 500 pixels
@@ -23,15 +23,10 @@ function onTurtlesim(frame) {
 
 /** Decodes each pen canvas PNG once; frames are drawn from the decoded image. */
 function onCanvas(frame) {
-  const seq = ++app.turtleImageSeq;
-  const image = new Image();
-  image.onload = () => {
-    if (seq !== app.turtleImageSeq) return;   // a newer canvas arrived while this one decoded
+  decodePng('turtlesim canvas', frame.png, (image) => {
     app.turtleImage = image;
     requestRender('turtle');
-  };
-  image.onerror = () => addMessage('could not decode the turtlesim canvas image');
-  image.src = `data:image/png;base64,${frame.png}`;
+  });
 }
 
 export function turtleToPixel(x, y) {
