@@ -50,8 +50,13 @@ def transform(parent, child, x, y, yaw):
 
 
 @pytest.fixture(scope="module")
-def page(ros_master, browser):
-    base, _ = start_web_server(ros_master)
+def maps_home(tmp_path_factory):
+    return tmp_path_factory.mktemp("home")
+
+
+@pytest.fixture(scope="module")
+def page(ros_master, browser, maps_home):
+    base, _ = start_web_server(ros_master, "_maps_home:={}".format(maps_home))
     probe = ros_master.probe()
     probe.publish("/tf_static", "tf2_msgs/TFMessage", transform("base_footprint", "base_scan", 0.0, 0.0, 0.0))
     probe.publish("/odom", "nav_msgs/Odometry", {"header": {"frame_id": "odom"}, "child_frame_id": "base_footprint",
@@ -235,3 +240,20 @@ def test_the_covariance_ellipse_is_one_standard_deviation_along_each_axis(naviga
 
 def page_errors(page):
     return page.script("return labView.errors;") + page.console_errors()
+
+
+def test_save_map_runs_map_saver_into_the_folder_named_under_home(page, maps_home):
+    for field, value in (("map-folder", "course_maps"), ("map-name", "arena")):
+        box = page.driver.find_element(By.ID, field)
+        box.clear()
+        box.send_keys(value)
+    page.driver.find_element(By.ID, "save-map-button").click()
+
+    def saved():
+        """map_saver takes the next /map: the probe's is not latched as gmapping's is, so send it again."""
+        page.probe.publish("/map", "nav_msgs/OccupancyGrid", occupancy_grid(), wait_s=0.5)
+        return "saved" in page.driver.find_element(By.ID, "save-map-reply").text
+
+    wait_until(saved, 30, "map_saver to save the map", interval_s=0.5)
+    assert (maps_home / "course_maps" / "arena.pgm").read_bytes().startswith(b"P5")
+    assert "resolution: 0.1" in (maps_home / "course_maps" / "arena.yaml").read_text()

@@ -102,7 +102,7 @@ def test_deeply_nested_json_is_refused_not_a_crash():
 def test_every_command_is_declared_once_and_documented():
     assert set(COMMANDS) == {"teleop", "spawn_box", "move_model", "delete_model", "reset_world", "service_fields",
                              "call_service", "echo", "camera", "initial_pose", "nav_goal", "publish_point",
-                             "cancel_goal"}
+                             "cancel_goal", "save_map"}
     text = document(PANELS)
     for kind, spec in COMMANDS.items():
         assert spec.doc and "page -> server  {} {{".format(kind) in text
@@ -125,6 +125,8 @@ def test_a_command_declared_by_two_panels_is_refused_at_start():
     ({"type": "initial_pose", "frame": "map", "x": 1, "y": 2, "yaw": 4}, "yaw"),
     ({"type": "nav_goal", "frame": "map; rm", "x": 1, "y": 2, "yaw": 0}, "frame"),
     ({"type": "publish_point", "frame": "map", "x": 1e9, "y": 0}, "x"),
+    ({"type": "save_map", "id": 1, "folder": "..", "name": "m"}, "folder"),
+    ({"type": "save_map", "id": 1, "folder": "maps", "name": "a/b"}, "name"),
 ])
 def test_tool_commands_are_validated_like_the_others(content, named):
     assert str(refusal(json.dumps(content))).startswith(named)

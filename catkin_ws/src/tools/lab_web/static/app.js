@@ -12,12 +12,13 @@ import graph from './js/panels/graph.js';
 import map from './js/panels/map.js';
 import nav from './js/panels/nav.js';
 import robot from './js/panels/robot.js';
+import saveMap from './js/panels/save_map.js';
 import services from './js/panels/services.js';
 import tools from './js/panels/tools.js';
 import turtlesim from './js/panels/turtlesim.js';
 import world from './js/panels/world.js';
 
-const PANELS = [world, map, nav, robot, turtlesim, graph, camera, drive, services, tools];
+const PANELS = [world, map, nav, robot, turtlesim, graph, camera, drive, services, tools, saveMap];
 const RECONNECT_MS = 1000;
 
 const handlers = {hello: [onHello], reply: [onReply], error: [onError]};   // frame type -> handlers

@@ -6,6 +6,7 @@ from lab_web.panels.graph import GraphPanel
 from lab_web.panels.map import MapPanel
 from lab_web.panels.nav import NavPanel
 from lab_web.panels.robot import RobotPanel
+from lab_web.panels.save_map import SaveMapPanel
 from lab_web.panels.services import ServicesPanel
 from lab_web.panels.tools import ToolsPanel
 from lab_web.panels.turtlesim import TurtlesimPanel
@@ -22,6 +23,7 @@ PANELS = (
     DrivePanel,
     ServicesPanel,
     ToolsPanel,
+    SaveMapPanel,
 )
 
 

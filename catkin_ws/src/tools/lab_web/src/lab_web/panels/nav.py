@@ -39,6 +39,7 @@ class Costmap:
         self.frame = ""
         self.cells = None
         self.encoded_at = None
+        self.pending = False     # patched since its last picture
 
     def replace(self, grid):
         self.info, self.frame = grid.info, _frame(grid.header)
@@ -97,6 +98,10 @@ class NavPanel(Panel):
         ]
 
     def frames(self, session):
+        with self._lock:
+            for name, costmap in self._costmaps.items():
+                if costmap.pending:
+                    self._publish_costmap(name)   # a patch that came within COSTMAP_PERIOD_S of the last picture
         return self.lacking(session, *(("costmap", versioned, "costmap " + name)
                                        for name, versioned in self.costmaps.items()), ("nav", self.nav))
 
@@ -114,8 +119,9 @@ class NavPanel(Panel):
         costmap = self._costmaps[name]
         now = now_s()
         if not force and costmap.encoded_at is not None and now - costmap.encoded_at < COSTMAP_PERIOD_S:
+            costmap.pending = True
             return
-        costmap.encoded_at = now
+        costmap.encoded_at, costmap.pending = now, False
         self.costmaps[name].set(dict(costmap.content(), name=name))
 
     def _set(self, key, value):

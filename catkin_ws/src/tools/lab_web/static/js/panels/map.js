@@ -2,7 +2,7 @@
  * The map panel: /map as RViz's Map display draws it (unknown grey, free white, occupied black; opaque, above
  * the simulator's floor and below the robot), and the fixed frame: map once a map has come, else odom.
  */
-import {addMessage, app, decodePng, isNumber, labView, requestRender} from '../core.js';
+import {addMessage, app, decodePng, isNumber, labView, requestRender, updatePanels} from '../core.js';
 import {addLayer, drawGridImage, updateView} from '../view.js';
 
 let mapImage = null;            // the decoded map PNG, with the frame it came in
@@ -26,6 +26,7 @@ function onMap(frame) {
     const [x, y] = frame.origin;
     app.mapRegion = [x, y, x + frame.width * frame.resolution, y + frame.height * frame.resolution];
     labView.maps += 1;
+    if (labView.maps === 1) updatePanels();   // what needs a map shows from now on
     updateView();
     requestRender('world');
   });
