@@ -192,6 +192,7 @@ def test_publish_point_and_cancel_goal(page):
 PARTICLE, PLAN_Y, LETHAL_CELL_AT = (2.0, 0.5, 0.0), 2.5, (2.05, -0.85)
 AMCL_POSE, AMCL_SIGMAS = (-0.5, 1.5, -math.pi / 2), (0.2, 0.1)
 PARTICLE_RGB, PLAN_RGB, LETHAL_OVER_WHITE = (255, 25, 0), (0, 176, 0), (255, 77, 255)
+FRONTIER_CELLS, FRONTIER_SPHERE = [(-0.5, -0.5), (-0.4, -0.5)], (2.5, 2.0)
 
 
 def stamped_pose(x, y, yaw):
@@ -212,8 +213,15 @@ def navigation(page):
     probe.publish("/move_base/global_costmap/costmap", "nav_msgs/OccupancyGrid", {
         "header": {"frame_id": "map"}, "info": {"resolution": RESOLUTION, "width": 4, "height": 4, "origin": {
             "position": {"x": 2.0, "y": -0.9}, "orientation": {"w": 1.0}}}, "data": [100] + [0] * 15})
+    marker = {"header": {"frame_id": "map"}, "ns": "frontiers", "action": 0, "pose": {"orientation": {"w": 1.0}}}
+    probe.publish("/explore/frontiers", "visualization_msgs/MarkerArray", {"markers": [
+        dict(marker, id=0, type=8, scale={"x": 0.1, "y": 0.1}, color={"b": 1.0, "a": 1.0},
+             points=[{"x": x, "y": y} for x, y in FRONTIER_CELLS]),
+        dict(marker, id=1, type=2, scale={"x": 0.3, "y": 0.3, "z": 0.3}, color={"g": 1.0, "a": 1.0},
+             pose={"position": {"x": FRONTIER_SPHERE[0], "y": FRONTIER_SPHERE[1]}, "orientation": {"w": 1.0}})]})
     wait_until(lambda: page.script("return labView.costmaps >= 1 && !!labView.nav && !!labView.nav.amcl && "
-                                   "!!labView.nav.particles && !!(labView.nav.plans || {}).global;"), 10,
+                                   "!!labView.nav.particles && !!(labView.nav.plans || {}).global && "
+                                   "labView.nav.frontiers.length === 2;"), 10,
                "the page to show the navigation displays")
     return page
 
@@ -257,3 +265,8 @@ def test_save_map_runs_map_saver_into_the_folder_named_under_home(page, maps_hom
     wait_until(saved, 30, "map_saver to save the map", interval_s=0.5)
     assert (maps_home / "course_maps" / "arena.pgm").read_bytes().startswith(b"P5")
     assert "resolution: 0.1" in (maps_home / "course_maps" / "arena.yaml").read_text()
+
+
+def test_explore_frontiers_are_drawn_as_their_markers_say(navigation):
+    assert pixel(navigation, *FRONTIER_CELLS[0]) == (0, 0, 255)
+    assert pixel(navigation, *FRONTIER_SPHERE) == (0, 255, 0)

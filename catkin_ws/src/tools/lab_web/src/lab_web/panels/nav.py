@@ -1,7 +1,9 @@
 """The navigation panel: what RViz's turtlebot3_navigation view shows of amcl and move_base, each in its own frame
 (the page places odom-frame items through map -> odom): the global and local costmaps (full grids and their
 costmap_updates patches, in RViz's costmap colours), the global plan (NavfnROS/plan) and the local plan
-(DWAPlannerROS/local_plan), amcl's particle cloud and pose with its covariance, and move_base's current goal."""
+(DWAPlannerROS/local_plan), amcl's particle cloud and pose with its covariance, move_base's current goal and
+explore_lite's frontiers (/explore/frontiers: POINTS of each frontier's cells and a SPHERE at each, by marker id,
+DELETE and DELETEALL honoured as RViz's MarkerArray display does)."""
 import threading
 
 import numpy as np
@@ -9,6 +11,7 @@ import rospy
 from geometry_msgs.msg import PoseArray, PoseStamped, PoseWithCovarianceStamped
 from map_msgs.msg import OccupancyGridUpdate
 from nav_msgs.msg import OccupancyGrid, Path
+from visualization_msgs.msg import Marker, MarkerArray
 
 from lab_web import occupancy, scene
 from lab_web.panels.base import Panel, Versioned
@@ -20,6 +23,7 @@ COSTMAP_PERIOD_S = 0.5
 """A costmap's picture is redrawn at most twice a second (move_base patches it at 5-10 Hz)."""
 MAX_PLAN_POINTS = 2000
 MAX_PARTICLES = 5000
+MARKER_KINDS = {Marker.POINTS: "points", Marker.SPHERE: "sphere"}
 
 
 def _pose(pose):
@@ -71,7 +75,9 @@ class NavPanel(Panel):
                    'purple, inscribed cyan)} | {"name", "error"}  with the costmap and its updates, <= 2 per second',
         "nav": '{"plans": {"global" | "local": {"frame", "points": [[x, y], ...]}}, "particles": {"frame", "poses": '
                '[[x, y, yaw], ...]} | null, "amcl": {"frame", "pose": [x, y, yaw], "covariance": [xx, xy, yy, '
-               'yaw-yaw]} | null, "goal": {"frame", "pose": [x, y, yaw]} | null}  when one of them changes',
+               'yaw-yaw]} | null, "goal": {"frame", "pose": [x, y, yaw]} | null, "frontiers": [{"frame", "kind": '
+               '"points" | "sphere", "rgba": [r, g, b, a] 0-1, "scale": m, "points": [[x, y], ...]}]}  when one of '
+               'them changes',
     }
 
     def __init__(self, ros):
@@ -79,7 +85,8 @@ class NavPanel(Panel):
         self._lock = threading.Lock()
         self._costmaps = {name: Costmap() for name in COSTMAPS}
         self.costmaps = {name: Versioned() for name in COSTMAPS}
-        self._nav = {"plans": {}, "particles": None, "amcl": None, "goal": None}
+        self._nav = {"plans": {}, "particles": None, "amcl": None, "goal": None, "frontiers": []}
+        self._frontiers = {}     # (ns, id) -> the page's marker
         self.nav = Versioned()
         self._subscribers = []
         for name, topic in COSTMAPS.items():
@@ -95,6 +102,7 @@ class NavPanel(Panel):
             rospy.Subscriber("/particlecloud", PoseArray, self._on_particles, queue_size=1),
             rospy.Subscriber("/amcl_pose", PoseWithCovarianceStamped, self._on_amcl_pose, queue_size=1),
             rospy.Subscriber(ros.name("move_base/current_goal"), PoseStamped, self._on_goal, queue_size=1),
+            rospy.Subscriber("/explore/frontiers", MarkerArray, self._on_frontiers, queue_size=1),
         ]
 
     def frames(self, session):
@@ -148,3 +156,22 @@ class NavPanel(Panel):
 
     def _on_goal(self, goal):
         self._set("goal", {"frame": _frame(goal.header), "pose": _pose(goal.pose)})
+
+    def _on_frontiers(self, array):
+        with self._lock:
+            for marker in array.markers:
+                key = (marker.ns, marker.id)
+                if marker.action == Marker.DELETEALL:
+                    self._frontiers.clear()
+                elif marker.action == Marker.DELETE:
+                    self._frontiers.pop(key, None)
+                elif marker.type in MARKER_KINDS:
+                    points = [[round(marker.pose.position.x + point.x, 3), round(marker.pose.position.y + point.y, 3)]
+                              for point in marker.points] or [[round(marker.pose.position.x, 3),
+                                                                round(marker.pose.position.y, 3)]]
+                    color = marker.color
+                    self._frontiers[key] = {"frame": _frame(marker.header), "kind": MARKER_KINDS[marker.type],
+                                            "rgba": [color.r, color.g, color.b, color.a],
+                                            "scale": marker.scale.x, "points": points}
+            frontiers = list(self._frontiers.values())
+        self._set("frontiers", frontiers)

@@ -3,6 +3,7 @@
  * global and local costmaps (RViz's costmap colours at its Map display's alpha 0.7), the global plan (green) and
  * local plan (yellow), the particle cloud as arrows (RViz's PoseArray: red-orange, 0.3 m), amcl's pose with its
  * position covariance as an ellipse of one standard deviation, and move_base's current goal (magenta arrow).
+ * explore_lite's frontiers as its markers say (points of each frontier's cells, a sphere at each, in their colours).
  * Each item is drawn in its own frame: the fixed frame as it is, odom through map -> odom; others not at all.
  */
 import {addMessage, app, decodePng, isNumber, labView, requestRender} from '../core.js';
@@ -102,6 +103,25 @@ function drawLayer(ctx, layerFrame) {
   }
   if (nav.amcl && inLayer(nav.amcl.frame, layerFrame) && nav.amcl.covariance.every(isNumber)) drawAmcl(ctx, nav.amcl);
   if (nav.goal && inLayer(nav.goal.frame, layerFrame)) arrow(ctx, nav.goal.pose, 0.5 * scale, COLORS.goal, 4);
+  for (const marker of nav.frontiers || []) {
+    if (inLayer(marker.frame, layerFrame)) drawMarker(ctx, marker, scale);
+  }
+}
+
+function drawMarker(ctx, marker, scale) {
+  const [r, g, b, a] = marker.rgba.map((value) => (isNumber(value) ? value : 1));
+  ctx.fillStyle = `rgba(${Math.round(r * 255)}, ${Math.round(g * 255)}, ${Math.round(b * 255)}, ${a})`;
+  const size = Math.max(marker.scale * scale, 2);
+  for (const [x, y] of marker.points) {
+    const [px, py] = worldToPixel(x, y);
+    if (marker.kind === 'points') {
+      ctx.fillRect(px - size / 2, py - size / 2, size, size);
+    } else {
+      ctx.beginPath();
+      ctx.arc(px, py, size / 2, 0, 2 * Math.PI);
+      ctx.fill();
+    }
+  }
 }
 
 function setup() {
