@@ -21,6 +21,7 @@ function onMap(frame) {
     return;
   }
   if (![frame.width, frame.height, frame.resolution].every(isNumber) || !Array.isArray(frame.origin)) return;
+  labView.mapBytes = frame.png.length;    // the base64 PNG, as sent (benchmarks read it)
   decodePng('map', frame.png, (image) => {
     mapImage = {image, frame};
     const [x, y] = frame.origin;
