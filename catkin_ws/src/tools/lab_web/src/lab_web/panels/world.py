@@ -83,8 +83,8 @@ class WorldPanel(Panel):
     def _on_scene_primitives(self, message):
         primitives = scene.scene_primitives(message.data)
         with self._lock:
-            if primitives is not None:
-                self.scene.set({"primitives": primitives})
+            if primitives is not None and primitives != (self.scene.value or {}).get("primitives"):
+                self.scene.set({"primitives": primitives})   # a page gets the scene again only when it changed
             self._update_world()
 
     def _update_world(self):
