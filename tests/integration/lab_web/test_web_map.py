@@ -139,6 +139,8 @@ def drag(page, tool, start, end=None):
         px, py = page.script("return labView.worldToPixel(arguments[0], arguments[1]);", x, y)
         return round(px - middle[0]), round(py - middle[1])
 
+    wait_until(lambda: page.driver.find_element(By.ID, tool).is_displayed(), 10,
+               "the tool to show (the probe subscribes to its topic)")
     page.driver.find_element(By.ID, tool).click()
     actions = ActionChains(page.driver).move_to_element_with_offset(canvas, *offset(*start)).click_and_hold()
     if end is not None:
@@ -184,6 +186,7 @@ def test_publish_point_and_cancel_goal(page):
     point = one_message(page, "/clicked_point")
     assert point["header"]["frame_id"] == "map"
     assert math.hypot(point["point"]["x"] - 0.2, point["point"]["y"] - 0.3) <= 2 * metres_per_pixel
+    wait_until(lambda: page.driver.find_element(By.ID, "cancel-goal").is_displayed(), 10, "the cancel button")
     page.driver.find_element(By.ID, "cancel-goal").click()
     assert one_message(page, "/move_base/cancel")["id"] == ""
     assert page.script("return labView.errors;") == []

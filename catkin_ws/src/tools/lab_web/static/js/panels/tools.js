@@ -2,19 +2,26 @@
  * The tools panel: RViz's publishing tools on the top view. Pick "2D Pose Estimate" or "2D Nav Goal", then press
  * where the robot is (or should go) and drag towards where it faces; "Publish Point" takes a click. As in RViz,
  * a tool is used once and the view goes back to its default tool (here: moving boxes). "Cancel goal" cancels
- * every move_base goal. Everything is published in the fixed frame (map once there is a map).
+ * every move_base goal. Everything is published in the fixed frame (map once there is a map). A tool shows only
+ * while some node subscribes to its topic (amcl to /initialpose, move_base to its goal and cancel topics), so the
+ * Week 4 arena or turtlesim offers nothing that would go nowhere.
  */
 import {$, app, element, isPageKey, requestRender, send} from '../core.js';
 import {addLayer, canvas, canvasPoint, currentView, pixelToWorld, strokeLine, worldToPixel} from '../view.js';
 
 const TOOLS = [
-  {kind: 'initial_pose', label: '2D Pose Estimate', title: 'Drag from where the robot is towards where it faces: /initialpose', color: '#2fa84f'},
-  {kind: 'nav_goal', label: '2D Nav Goal', title: 'Drag from the goal towards where the robot should face: /move_base_simple/goal', color: '#c02fc0'},
-  {kind: 'publish_point', label: 'Publish Point', title: 'Click a point: /clicked_point', color: '#d08000'},
+  {kind: 'initial_pose', label: '2D Pose Estimate', topic: '/initialpose', color: '#2fa84f',
+    title: 'Drag from where the robot is towards where it faces: /initialpose'},
+  {kind: 'nav_goal', label: '2D Nav Goal', topic: '/move_base_simple/goal', color: '#c02fc0',
+    title: 'Drag from the goal towards where the robot should face: /move_base_simple/goal'},
+  {kind: 'publish_point', label: 'Publish Point', topic: '/clicked_point', color: '#d08000',
+    title: 'Click a point: /clicked_point'},
 ];
+const CANCEL_TOPIC = '/move_base/cancel';
 const MIN_DRAG_PX = 4;                  // a shorter drag keeps the robot's heading along +x
 const round3 = (value) => Math.round(value * 1000) / 1000;
 const buttons = new Map();              // tool kind -> button
+let cancelButton = null;
 let drag = null;                        // {tool, start: [x, y] fixed frame, end}
 
 function choose(kind) {
@@ -69,13 +76,16 @@ function setup() {
     button.type = 'button';
     button.id = `tool-${tool.kind.replace('_', '-')}`;
     button.title = tool.title;
+    button.hidden = true;
     button.addEventListener('click', () => choose(tool.kind));
     buttons.set(tool.kind, button);
     bar.appendChild(button);
   }
   const cancel = element('button', 'secondary', 'Cancel goal');
+  cancelButton = cancel;
   cancel.type = 'button';
   cancel.id = 'cancel-goal';
+  cancel.hidden = true;
   cancel.title = 'Cancel every move_base goal (/move_base/cancel)';
   cancel.addEventListener('click', () => send({type: 'cancel_goal'}));
   bar.appendChild(cancel);
@@ -112,4 +122,15 @@ function setup() {
   });
 }
 
-export default {name: 'tools', setup};
+/** Shows the tools whose topics some node subscribes to (the graph lists lab_web's own publishers' topics). */
+function onGraph(frame) {
+  const subscribed = new Set((frame.topics || []).filter((topic) => (topic.subscribers || []).length)
+    .map((topic) => topic.name));
+  for (const tool of TOOLS) {
+    buttons.get(tool.kind).hidden = !subscribed.has(tool.topic);
+    if (app.tool === tool.kind && !subscribed.has(tool.topic)) choose(null);
+  }
+  cancelButton.hidden = !subscribed.has(CANCEL_TOPIC);
+}
+
+export default {name: 'tools', setup, frames: {graph: onGraph}};
