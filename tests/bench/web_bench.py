@@ -10,7 +10,10 @@ camera), lab_web's server (rosrun lab_web web_server on a free port) and ONE hea
 - state-to-page latency, the page's `labView.latenciesMs` (Date.now() when a frame is handled minus the frame's
   stamp_ms, the wall time the newest /odom or /scan reached the server): median and 95th percentile (<= 100 ms);
 - state frames per second the page handled (`labView.frames` over the window; target >= 20, the server sends
-  at most 25).
+  at most 25);
+- then a 384 x 384 map (gmapping's size for the course arenas at 0.05 m: a free room with walls in unknown space)
+  published every 2 s as gmapping does, over MAP_MEASURE_S: the map frame's size (base64 PNG), map frames per
+  second the page drew, and the server's CPU with the map panel following /tf as well.
 `run()` returns the rows [(name, value, unit, target, comparison)] for scripts/bench's table.
 """
 import sys
@@ -34,6 +37,9 @@ TURN_RAD_S = 0.3
 CPU_TARGET_PERCENT = 5.0
 LATENCY_TARGET_MS = 100.0
 FPS_TARGET = 20.0
+MAP_MEASURE_S = 10.0
+MAP_CELLS = 384
+MAP_PERIOD_S = 2.0
 DEMO = ("week4_services", "week4_demo.launch", "gui:=false", "camera_width:=320", "camera_height:=240")
 
 
@@ -84,9 +90,11 @@ def measure_with_page(duration_s=MEASURE_S):
         wall = time.monotonic() - wall_start
         if not latencies:
             raise RuntimeError("the page recorded no latencies in {:.0f} s".format(wall))
-        return {"cpu": 100.0 * cpu_used / wall, "p50": float(numpy.percentile(latencies, 50)),
-                "p95": float(numpy.percentile(latencies, 95)), "fps": (frames_end - frames_start) / wall,
-                "samples": len(latencies)}
+        result = {"cpu": 100.0 * cpu_used / wall, "p50": float(numpy.percentile(latencies, 50)),
+                  "p95": float(numpy.percentile(latencies, 95)), "fps": (frames_end - frames_start) / wall,
+                  "samples": len(latencies)}
+        result.update(measure_map(probe, browser, pid))
+        return result
     finally:
         try:
             if probe is not None:
@@ -100,6 +108,34 @@ def measure_with_page(duration_s=MEASURE_S):
             master.shutdown()
 
 
+def slam_like_map():
+    """A 384 x 384 OccupancyGrid as a dict: unknown, a free 6 x 6 m room at the centre, 5 cm walls round it."""
+    cells = numpy.full((MAP_CELLS, MAP_CELLS), -1, dtype=numpy.int8)
+    low, high = MAP_CELLS // 2 - 60, MAP_CELLS // 2 + 60
+    cells[low:high, low:high] = 0
+    cells[low:high, [low, high - 1]] = 100
+    cells[[low, high - 1], low:high] = 100
+    return {"header": {"frame_id": "map"}, "info": {"resolution": 0.05, "width": MAP_CELLS, "height": MAP_CELLS,
+                                                    "origin": {"position": {"x": -9.6, "y": -9.6},
+                                                               "orientation": {"w": 1.0}}},
+            "data": cells.ravel().tolist()}
+
+
+def measure_map(probe, browser, pid):
+    """{"map_bytes", "map_rate", "map_cpu"} while a 384 x 384 map comes every MAP_PERIOD_S."""
+    grid = slam_like_map()
+    maps_start = browser.script("return labView.maps || 0;")
+    cpu_start, wall_start = cpu_seconds(pid), time.monotonic()
+    while time.monotonic() - wall_start < MAP_MEASURE_S:
+        sent = time.monotonic()
+        probe.publish("/map", "nav_msgs/OccupancyGrid", grid)
+        time.sleep(max(0.0, MAP_PERIOD_S - (time.monotonic() - sent)))
+    wall = time.monotonic() - wall_start
+    return {"map_bytes": browser.script("return labView.mapBytes || 0;"),
+            "map_rate": (browser.script("return labView.maps;") - maps_start) / wall,
+            "map_cpu": 100.0 * (cpu_seconds(pid) - cpu_start) / wall}
+
+
 def run(duration_s=MEASURE_S):
     """scripts/bench rows: lab_web with tb3_sim (Week 4 demo) at real time and one connected headless page."""
     result = measure_with_page(duration_s)
@@ -108,6 +144,9 @@ def run(duration_s=MEASURE_S):
         ("lab_web state-to-page latency p50", result["p50"], "ms", LATENCY_TARGET_MS, "<="),
         ("lab_web state-to-page latency p95", result["p95"], "ms", LATENCY_TARGET_MS, "<="),
         ("lab_web state frames delivered to the page", result["fps"], "frames/s", FPS_TARGET, ">="),
+        ("lab_web map frame, 384x384 map", result["map_bytes"] / 1024.0, "kB", 64.0, "<="),
+        ("lab_web map frames drawn, map every 2 s", result["map_rate"], "frames/s", 0.9 / MAP_PERIOD_S, ">="),
+        ("lab_web server CPU with the map and /tf", result["map_cpu"], "% of a core", 10.0, "<="),
     ]
 
 

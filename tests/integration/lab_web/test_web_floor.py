@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-from roslab import wait_for_topic
+from roslab import wait_for_topic, wait_until
 
 from .conftest import open_page, start_web_server
 
@@ -53,3 +53,11 @@ def test_the_page_draws_text_markings(page):
     """The "A" at (2.5, 1.5), 0.3 m tall: some of its box is black ink."""
     dark = pixels(page, [(2.5 + dx / 20, 1.5 + dy / 20) for dx in range(-3, 4) for dy in range(-3, 4)])
     assert sum(max(rgb) < 80 for rgb in dark) >= 5
+
+
+def test_the_scene_comes_once_not_with_each_world_update(page):
+    """The world frame changes while the robot's body moves (<= 2 Hz); the scene's primitives come only once."""
+    frames = page.script("return labView.frames;")
+    wait_until(lambda: page.script("return labView.frames;") > frames + 10, 20, "more state frames")
+    assert page.script("return labView.sceneFrames;") == 1
+    assert "scene" not in page.script("return app.world;")

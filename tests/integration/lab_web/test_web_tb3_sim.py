@@ -76,6 +76,8 @@ def test_the_page_draws_the_world_where_it_is_without_console_errors(page):
     assert close_to(pixel(page, 1.5, 0.1), MODEL_RGB)            # target_box, 0.4 m wide at (1.5, 0)
     assert close_to(pixel(page, 0.5, 1.0), FLOOR_RGB, tolerance=20)
     assert page.driver.find_element(By.ID, "status").text == "connected"
+    for navigation_only in ("tool-initial-pose", "tool-nav-goal", "cancel-goal", "save-map"):   # no amcl, move_base
+        assert not page.driver.find_element(By.ID, navigation_only).is_displayed(), navigation_only
     assert page.console_errors() == []
 
 

@@ -65,3 +65,15 @@ def test_the_arrow_keys_drive_turtle1(page):
     finally:
         ActionChains(page.driver).key_up(Keys.ARROW_LEFT, body).perform()
     assert page.driver.find_element(By.ID, "teleop-target").text == "turtle1"
+
+
+def test_turtlesim_shows_no_error_and_no_tb3_only_control(page):
+    """turtlesim offers no /move_service, /gazebo/reset_world or camera: the page says nothing is wrong and does
+    not offer them."""
+    wait_until(lambda: "not offered" in page.driver.find_element(By.ID, "service-reply").text, 10,
+               "the form to say /move_service is not offered")
+    assert page.driver.find_elements(By.CSS_SELECTOR, ".failed, .message") == []
+    assert page.script("return labView.errors;") == []
+    for tb3_only in ("reset-world", "camera-toggle", "world", "tool-nav-goal"):
+        assert not page.driver.find_element(By.ID, tb3_only).is_displayed(), tb3_only
+    assert page.driver.find_element(By.ID, "turtlesim").is_displayed()

@@ -5,17 +5,20 @@ import math
 
 import pytest
 
-from lab_web.protocol import MAX_FRAME_BYTES, ProtocolError, frame, parse_command
-from lab_web.teleop import TELEOP_LIMITS
+from lab_web.commands import MAX_FRAME_BYTES, CommandSpec, ProtocolError, parse_command
+from lab_web.panels import PANELS, command_registry
+from lab_web.protocol import document, frame
+
+COMMANDS = {kind: spec for kind, (_, spec) in command_registry().items()}
 
 
 def parse(content):
-    return parse_command(json.dumps(content), TELEOP_LIMITS)
+    return parse_command(json.dumps(content), COMMANDS)
 
 
 def refusal(text):
     with pytest.raises(ProtocolError) as error:
-        parse_command(text, TELEOP_LIMITS)
+        parse_command(text, COMMANDS)
     return error.value
 
 
@@ -94,3 +97,41 @@ def test_server_frames_are_json_without_non_finite_numbers():
 
 def test_deeply_nested_json_is_refused_not_a_crash():
     assert "nested too deeply" in str(refusal("[" * 4000))
+
+
+def test_every_command_is_declared_once_and_documented():
+    assert set(COMMANDS) == {"teleop", "spawn_box", "move_model", "delete_model", "reset_world", "service_fields",
+                             "call_service", "echo", "camera", "initial_pose", "nav_goal", "publish_point",
+                             "cancel_goal", "save_map"}
+    text = document(PANELS)
+    for kind, spec in COMMANDS.items():
+        assert spec.doc and "page -> server  {} {{".format(kind) in text
+    for panel in PANELS:
+        for kind in panel.FRAMES:
+            assert "server -> page  {}  ".format(kind) in text
+
+
+def test_a_command_declared_by_two_panels_is_refused_at_start():
+    class First:
+        name, COMMANDS = "first", {"go": CommandSpec((), "go")}
+
+    class Second(First):
+        name = "second"
+    with pytest.raises(ValueError, match="go is declared by panels first and second"):
+        command_registry((First, Second))
+
+
+@pytest.mark.parametrize("content, named", [
+    ({"type": "initial_pose", "frame": "map", "x": 1, "y": 2, "yaw": 4}, "yaw"),
+    ({"type": "nav_goal", "frame": "map; rm", "x": 1, "y": 2, "yaw": 0}, "frame"),
+    ({"type": "publish_point", "frame": "map", "x": 1e9, "y": 0}, "x"),
+    ({"type": "save_map", "id": 1, "folder": "..", "name": "m"}, "folder"),
+    ({"type": "save_map", "id": 1, "folder": "maps", "name": "a/b"}, "name"),
+])
+def test_tool_commands_are_validated_like_the_others(content, named):
+    assert str(refusal(json.dumps(content))).startswith(named)
+
+
+def test_a_tool_command_carries_its_pose():
+    assert parse({"type": "nav_goal", "frame": "map", "x": 1, "y": -2, "yaw": 3.0}) == (
+        "nav_goal", None, {"frame": "map", "x": 1.0, "y": -2.0, "yaw": 3.0})

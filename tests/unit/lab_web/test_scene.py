@@ -20,7 +20,7 @@ from lab_web.scene import (
     scan_points,
     scene_primitives,
     sensor_offset,
-    with_scene,
+    with_scene_bounds,
     world_content,
 )
 
@@ -115,18 +115,19 @@ FLOOR_SCENE = [{"kind": "FilledPolygon", "rings": [[[-4, -4], [4, -4], [4, 4], [
                 "rgb": [0, 0, 0]}]
 
 
-def test_the_scene_primitives_reach_the_page_and_widen_its_bounds_to_the_floor():
-    world = with_scene(world_content([marker("robots", CUBE, text="tb3")]), scene_primitives(json.dumps(FLOOR_SCENE)))
-    assert world["scene"] == FLOOR_SCENE
-    assert world["bounds"] == [-4.5, -4.5, 4.5, 4.5]
+def test_the_scene_primitives_widen_the_world_bounds_to_the_floor():
+    primitives = scene_primitives(json.dumps(FLOOR_SCENE))
+    assert primitives == FLOOR_SCENE
+    world = with_scene_bounds(world_content([marker("robots", CUBE, text="tb3")]), primitives)
+    assert "scene" not in world and world["bounds"] == [-4.5, -4.5, 4.5, 4.5]
 
 
 def test_walls_keep_the_bounds_they_give_when_the_floor_is_smaller():
     walls = world_content([marker("static", LINE_LIST, points=[(-6, 0), (6, 0)])])
-    assert with_scene(walls, FLOOR_SCENE)["bounds"] == [-6.5, -4.5, 6.5, 4.5]
+    assert with_scene_bounds(walls, FLOOR_SCENE)["bounds"] == [-6.5, -4.5, 6.5, 4.5]
 
 
 @pytest.mark.parametrize("text", ["not json", "{}", "[1, 2]", json.dumps([{"rgb": [0, 0, 0]}])])
 def test_a_scene_that_is_not_a_list_of_primitives_is_ignored(text):
     assert scene_primitives(text) is None
-    assert with_scene(world_content([]), None)["scene"] is None
+    assert with_scene_bounds(world_content([]), None) == world_content([])

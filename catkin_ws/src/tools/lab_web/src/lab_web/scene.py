@@ -226,10 +226,11 @@ def _scene_points(primitive):
     return points
 
 
-def with_scene(content, primitives):
-    """The `world` frame content with the scene primitives added ("scene": list or None) and its bounds widened to
-    take in the floor and static shapes they draw (a floor often reaches past the walls)."""
-    content = {**content, "scene": primitives}
+def with_scene_bounds(content, primitives):
+    """The `world` frame content with its bounds widened to take in the floor and static shapes the scene
+    primitives draw (a floor often reaches past the walls). The primitives go to the page in a frame of their own,
+    once, not with each world frame."""
+    content = dict(content)
     points = [point for primitive in primitives or [] for point in _scene_points(primitive)]
     if points:
         x_min, y_min, x_max, y_max = content["bounds"]

@@ -1,11 +1,12 @@
 """The web server (aiohttp): the page at /, its files under /static/, and one WebSocket per open page at /ws.
 
-No ROS import: it talks to a bridge (lab_web.ros_bridge.RosBridge, or any object with the same methods). Each
-page gets at most UPDATES_PER_S frames of state per second, only what changed since its last frame, and a slow
-page simply gets fewer (each send waits for the previous one). What a page sends is validated
-(lab_web.protocol); a bad frame gets an `error` frame back and changes nothing. Every request whose Host header does
-not name this machine is refused first (DNS rebinding, see lab_web.access), then the page and the socket need the
-token when one is set, and the socket an Origin that is the page's own.
+No ROS import: it talks to a bridge (lab_web.ros_bridge.RosBridge: its panels, their command registry, hello,
+handle and disconnect). Each page gets at most UPDATES_PER_S rounds of frames per second, only what changed since
+its last round, and a slow page simply gets fewer (each send waits for the previous one). What a page sends is
+validated against the panels' command registry (lab_web.commands); a bad frame gets an `error` frame back and
+changes nothing. Every request whose Host header does not name this machine is refused first (DNS rebinding, see
+lab_web.access), then the page and the socket need the token when one is set, and the socket an Origin that is the
+page's own.
 """
 import asyncio
 import itertools
@@ -15,7 +16,8 @@ from pathlib import Path
 
 from aiohttp import WSMsgType, web
 
-from lab_web.protocol import ProtocolError, frame, parse_command
+from lab_web.commands import ProtocolError, parse_command
+from lab_web.protocol import frame
 
 UPDATES_PER_S = 25.0
 MAX_SOCKET_MESSAGE_BYTES = 1 << 20
@@ -26,24 +28,17 @@ FLOOD_BURST = 100
 MAX_PENDING_REQUESTS = 2
 """Per page: service calls and model edits waiting for their reply."""
 REQUEST_WORKERS = 4
-"""Per kind of request (the service form's; the simulator's model edits and reset): threads that wait for
-replies. When all of a kind's are busy, a further request of that kind is refused at once, so services that hang
-cannot use up the threads the other kind, echo, camera and page departures need."""
-FORM_REQUESTS = ("service_fields", "call_service")
+"""Per kind of request (CommandSpec.pool: the service form's; the simulator's model edits and reset): threads
+that wait for replies. When all of a kind's are busy, a further request of that kind is refused at once, so
+services that hang cannot use up the threads the other kind, echo, camera and page departures need."""
+INLINE_COMMANDS = ("teleop",)
+"""Commands cheap enough to run in the event loop; the other commands without a reply run in its executor."""
 HEARTBEAT_S = 5.0
 SECURITY_HEADERS = {
     "Content-Security-Policy": "default-src 'self'; img-src 'self' data: blob:; connect-src 'self' ws: wss:; "
                                "style-src 'self' 'unsafe-inline'; frame-ancestors 'none'",
     "X-Content-Type-Options": "nosniff",
     "Referrer-Policy": "no-referrer",
-}
-REQUESTS = {
-    "spawn_box": lambda bridge, args: bridge.spawn_box(args["x"], args["y"]),
-    "move_model": lambda bridge, args: bridge.move_model(args["name"], args["x"], args["y"]),
-    "delete_model": lambda bridge, args: bridge.delete_model(args["name"]),
-    "reset_world": lambda bridge, args: bridge.reset_world(),
-    "service_fields": lambda bridge, args: bridge.service_fields(args["service"]),
-    "call_service": lambda bridge, args: bridge.call_service(args["service"], args["fields"]),
 }
 _session_ids = itertools.count(1)
 
@@ -97,16 +92,16 @@ class RequestPool:
 
 
 class PageSession:
-    """One open page: what it has been sent, and its socket. `pools` maps a request type to its RequestPool."""
+    """One open page: what it has been sent, and its socket. `pools` maps a pool name (CommandSpec.pool) to its
+    RequestPool."""
 
     def __init__(self, bridge, socket, pools):
         self.owner = "page-{}".format(next(_session_ids))
         self.bridge = bridge
         self.pools = pools
         self.socket = socket
-        self.sent = {}            # Versioned attribute name -> version sent
+        self.sent = {}            # key -> what was sent of it (a Versioned's version)
         self.trail_cursor = None
-        self.camera_on = False
         self.pending = 0
         self._send_lock = asyncio.Lock()
 
@@ -117,41 +112,17 @@ class PageSession:
             except ConnectionError:
                 pass   # the page went away mid-send: the socket's handler ends the session
 
-    def _changed(self, name):
-        versioned = getattr(self.bridge, name)
-        if versioned.value is None or self.sent.get(name) == versioned.version:
+    def lacks(self, key, versioned):
+        """`versioned`'s value when this page has not been sent it yet (under `key`), else None."""
+        value, version = versioned.value, versioned.version
+        if value is None or self.sent.get(key) == version:
             return None
-        self.sent[name] = versioned.version
-        return versioned.value
+        self.sent[key] = version
+        return value
 
     def frames(self):
-        """The frames this page lacks now."""
-        out = []
-        world = self._changed("world")
-        if world is not None:
-            out.append(frame("world", **world))
-        state = self._changed("state")
-        if state is not None:
-            reset, points, self.trail_cursor = self.bridge.trail_since(self.trail_cursor)
-            out.append(frame("state", trail={"reset": reset, "points": points}, **state))
-        turtlesim = self._changed("turtlesim")
-        if turtlesim is not None:
-            out.append(frame("turtlesim", **turtlesim))
-        canvas = self._changed("canvas")
-        if canvas is not None:
-            out.append(frame("canvas", png=canvas))
-        graph = self._changed("graph")
-        if graph is not None:
-            out.append(frame("graph", **graph))
-        if self.camera_on:
-            camera = self._changed("camera")
-            if camera is not None:
-                out.append(frame("camera", **camera))
-        echo = self.bridge.echo_of(self.owner)
-        if echo is not None and self.sent.get("echo") != (echo[0], echo[1].version):
-            self.sent["echo"] = (echo[0], echo[1].version)
-            out.append(frame("echo", topic=echo[0], text=echo[1].value))
-        return out
+        """The frames this page lacks now, panel by panel."""
+        return [frame(kind, **content) for panel in self.bridge.panels for kind, content in panel.frames(self)]
 
     async def stream(self):
         """Send what changed, UPDATES_PER_S times a second at most, until the socket closes."""
@@ -165,28 +136,24 @@ class PageSession:
     async def handle(self, text):
         """One text frame from the page."""
         try:
-            command = parse_command(text, self.bridge.teleop_limits)
+            command = parse_command(text, self.bridge.commands)
         except ProtocolError as error:
             await self.refuse(error.request_id, str(error))
             return
-        loop = asyncio.get_running_loop()
-        if command.type == "teleop":
-            self.bridge.command(self.owner, **command.args)
-        elif command.type == "camera":
-            self.camera_on = command.args["on"]
-            self.sent.pop("camera", None)
-            await loop.run_in_executor(None, self.bridge.set_camera, self.owner, self.camera_on)
-        elif command.type == "echo":
-            self.sent.pop("echo", None)
+        spec = self.bridge.commands[command.type]
+        if not spec.request:
             try:
-                await loop.run_in_executor(None, self.bridge.select_echo, self.owner, command.args["topic"])
+                if command.type in INLINE_COMMANDS:
+                    self.bridge.handle(self, command)
+                else:
+                    await asyncio.get_running_loop().run_in_executor(None, self.bridge.handle, self, command)
             except Exception as error:   # noqa: BLE001 - any failure is reported to the page, the server lives on
-                await self.refuse(None, "echo: {}".format(error))
+                await self.refuse(None, "{}: {}".format(command.type, error))
         elif self.pending >= MAX_PENDING_REQUESTS:
             await self.refuse(command.id, "busy: wait for the reply to an earlier request")
         else:
-            pool = self.pools[command.type]
-            future = pool.submit(REQUESTS[command.type], self.bridge, command.args)
+            pool = self.pools[spec.pool]
+            future = pool.submit(self.bridge.handle, self, command)
             if future is None:
                 await self.refuse(command.id, "busy: {} {} requests are waiting for their services to answer; try "
                                               "again in a moment".format(pool.workers, pool.name))
@@ -224,8 +191,7 @@ def make_app(bridge, policy, static_dir):
     """The aiohttp application serving `static_dir` and the bridge to pages that `policy` admits."""
     static_dir = Path(static_dir)
     sessions = set()
-    form_pool, model_pool = RequestPool("service form"), RequestPool("simulator")
-    pools = {kind: form_pool if kind in FORM_REQUESTS else model_pool for kind in REQUESTS}
+    pools = {spec.pool: RequestPool(spec.pool) for spec in bridge.commands.values() if spec.request}
 
     def refused(text):
         return web.Response(status=403, text="lab_web: " + text + "\n")
@@ -278,7 +244,7 @@ def make_app(bridge, policy, static_dir):
             await session.socket.close(message=b"lab_web is shutting down")
 
     async def stop_pools(app):
-        for pool in (form_pool, model_pool):
+        for pool in pools.values():
             pool.shutdown()
 
     app = web.Application(client_max_size=64 * 1024, middlewares=[known_host])

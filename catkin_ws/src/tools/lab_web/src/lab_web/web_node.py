@@ -18,7 +18,8 @@ import rospy
 from aiohttp import web
 
 from lab_web.access import AccessError, AccessPolicy
-from lab_web.ros_bridge import DEFAULT_SERVICE_TIMEOUT_S, RosBridge
+from lab_web.ros_bridge import RosBridge
+from lab_web.ros_context import DEFAULT_SERVICE_TIMEOUT_S
 from lab_web.server import make_app
 from master_reconnect import keep_registered
 

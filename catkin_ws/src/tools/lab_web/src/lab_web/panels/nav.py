@@ -1,0 +1,177 @@
+"""The navigation panel: what RViz's turtlebot3_navigation view shows of amcl and move_base, each in its own frame
+(the page places odom-frame items through map -> odom): the global and local costmaps (full grids and their
+costmap_updates patches, in RViz's costmap colours), the global plan (NavfnROS/plan) and the local plan
+(DWAPlannerROS/local_plan), amcl's particle cloud and pose with its covariance, move_base's current goal and
+explore_lite's frontiers (/explore/frontiers: POINTS of each frontier's cells and a SPHERE at each, by marker id,
+DELETE and DELETEALL honoured as RViz's MarkerArray display does)."""
+import threading
+
+import numpy as np
+import rospy
+from geometry_msgs.msg import PoseArray, PoseStamped, PoseWithCovarianceStamped
+from map_msgs.msg import OccupancyGridUpdate
+from nav_msgs.msg import OccupancyGrid, Path
+from visualization_msgs.msg import Marker, MarkerArray
+
+from lab_web import occupancy, scene
+from lab_web.panels.base import Panel, Versioned
+from lab_web.ros_context import now_s
+
+COSTMAPS = {"global": "move_base/global_costmap/costmap", "local": "move_base/local_costmap/costmap"}
+PLANS = {"global": "move_base/NavfnROS/plan", "local": "move_base/DWAPlannerROS/local_plan"}
+COSTMAP_PERIOD_S = 0.5
+"""A costmap's picture is redrawn at most twice a second (move_base patches it at 5-10 Hz)."""
+MAX_PLAN_POINTS = 2000
+MAX_PARTICLES = 5000
+MARKER_KINDS = {Marker.POINTS: "points", Marker.SPHERE: "sphere"}
+
+
+def _pose(pose):
+    return [round(pose.position.x, 3), round(pose.position.y, 3),
+            round(scene.yaw_of(pose.orientation.z, pose.orientation.w), 4)]
+
+
+def _frame(header):
+    return header.frame_id.lstrip("/")
+
+
+class Costmap:
+    """One costmap as cells, patched by its updates."""
+
+    def __init__(self):
+        self.info = None
+        self.frame = ""
+        self.cells = None
+        self.encoded_at = None
+        self.pending = False     # patched since its last picture
+
+    def replace(self, grid):
+        self.info, self.frame = grid.info, _frame(grid.header)
+        self.cells = np.asarray(grid.data, dtype=np.int8).reshape(grid.info.height, grid.info.width)
+
+    def patch(self, update):
+        if self.cells is None or update.x + update.width > self.cells.shape[1] \
+                or update.y + update.height > self.cells.shape[0] or len(update.data) != update.width * update.height:
+            return False
+        self.cells[update.y:update.y + update.height, update.x:update.x + update.width] = \
+            np.asarray(update.data, dtype=np.int8).reshape(update.height, update.width)
+        return True
+
+    def content(self):
+        info = self.info
+        try:
+            png = occupancy.grid_png(self.cells.tobytes(), info.width, info.height, "costmap")
+        except ValueError as error:
+            return {"error": str(error)}
+        return {"frame": self.frame, "width": info.width, "height": info.height, "resolution": info.resolution,
+                "origin": _pose(info.origin), "png": png}
+
+
+class NavPanel(Panel):
+    name = "nav"
+    FRAMES = {
+        "costmap": '{"name": "global" | "local", "frame", "width", "height", "resolution", "origin": [x, y, yaw], '
+                   '"png": RGBA, a pixel per cell, row 0 first, RViz\'s costmap colours (free transparent, lethal '
+                   'purple, inscribed cyan)} | {"name", "error"}  with the costmap and its updates, <= 2 per second',
+        "nav": '{"plans": {"global" | "local": {"frame", "points": [[x, y], ...]}}, "particles": {"frame", "poses": '
+               '[[x, y, yaw], ...]} | null, "amcl": {"frame", "pose": [x, y, yaw], "covariance": [xx, xy, yy, '
+               'yaw-yaw]} | null, "goal": {"frame", "pose": [x, y, yaw]} | null, "frontiers": [{"frame", "kind": '
+               '"points" | "sphere", "rgba": [r, g, b, a] 0-1, "scale": m, "points": [[x, y], ...]}]}  when one of '
+               'them changes',
+    }
+
+    def __init__(self, ros):
+        super().__init__(ros)
+        self._lock = threading.Lock()
+        self._costmaps = {name: Costmap() for name in COSTMAPS}
+        self.costmaps = {name: Versioned() for name in COSTMAPS}
+        self._nav = {"plans": {}, "particles": None, "amcl": None, "goal": None, "frontiers": []}
+        self._frontiers = {}     # (ns, id) -> the page's marker
+        self.nav = Versioned()
+        self._subscribers = []
+        for name, topic in COSTMAPS.items():
+            self._subscribers += [
+                rospy.Subscriber(ros.name(topic), OccupancyGrid, self._on_costmap, callback_args=name, queue_size=1,
+                                 buff_size=2 ** 24),
+                rospy.Subscriber(ros.name(topic + "_updates"), OccupancyGridUpdate, self._on_costmap_update,
+                                 callback_args=name, queue_size=5, buff_size=2 ** 24)]
+        for name, topic in PLANS.items():
+            self._subscribers.append(rospy.Subscriber(ros.name(topic), Path, self._on_plan, callback_args=name,
+                                                      queue_size=1))
+        self._subscribers += [
+            rospy.Subscriber("/particlecloud", PoseArray, self._on_particles, queue_size=1),
+            rospy.Subscriber("/amcl_pose", PoseWithCovarianceStamped, self._on_amcl_pose, queue_size=1),
+            rospy.Subscriber(ros.name("move_base/current_goal"), PoseStamped, self._on_goal, queue_size=1),
+            rospy.Subscriber("/explore/frontiers", MarkerArray, self._on_frontiers, queue_size=1),
+        ]
+
+    def frames(self, session):
+        with self._lock:
+            for name, costmap in self._costmaps.items():
+                if costmap.pending:
+                    self._publish_costmap(name)   # a patch that came within COSTMAP_PERIOD_S of the last picture
+        return self.lacking(session, *(("costmap", versioned, "costmap " + name)
+                                       for name, versioned in self.costmaps.items()), ("nav", self.nav))
+
+    def _on_costmap(self, grid, name):
+        with self._lock:
+            self._costmaps[name].replace(grid)
+            self._publish_costmap(name, force=True)
+
+    def _on_costmap_update(self, update, name):
+        with self._lock:
+            if self._costmaps[name].patch(update):
+                self._publish_costmap(name)
+
+    def _publish_costmap(self, name, force=False):
+        costmap = self._costmaps[name]
+        now = now_s()
+        if not force and costmap.encoded_at is not None and now - costmap.encoded_at < COSTMAP_PERIOD_S:
+            costmap.pending = True
+            return
+        costmap.encoded_at, costmap.pending = now, False
+        self.costmaps[name].set(dict(costmap.content(), name=name))
+
+    def _set(self, key, value):
+        with self._lock:
+            if key == "plans":
+                self._nav["plans"] = dict(self._nav["plans"], **value)
+            else:
+                self._nav[key] = value
+            self.nav.set(dict(self._nav))
+
+    def _on_plan(self, path, name):
+        points = [[round(stamped.pose.position.x, 3), round(stamped.pose.position.y, 3)]
+                  for stamped in path.poses[:MAX_PLAN_POINTS]]
+        self._set("plans", {name: {"frame": _frame(path.header), "points": points}})
+
+    def _on_particles(self, cloud):
+        self._set("particles", {"frame": _frame(cloud.header), "poses": [_pose(pose) for pose in
+                                                                         cloud.poses[:MAX_PARTICLES]]})
+
+    def _on_amcl_pose(self, message):
+        c = message.pose.covariance
+        self._set("amcl", {"frame": _frame(message.header), "pose": _pose(message.pose.pose),
+                           "covariance": [c[0], c[1], c[7], c[35]]})
+
+    def _on_goal(self, goal):
+        self._set("goal", {"frame": _frame(goal.header), "pose": _pose(goal.pose)})
+
+    def _on_frontiers(self, array):
+        with self._lock:
+            for marker in array.markers:
+                key = (marker.ns, marker.id)
+                if marker.action == Marker.DELETEALL:
+                    self._frontiers.clear()
+                elif marker.action == Marker.DELETE:
+                    self._frontiers.pop(key, None)
+                elif marker.type in MARKER_KINDS:
+                    points = [[round(marker.pose.position.x + point.x, 3), round(marker.pose.position.y + point.y, 3)]
+                              for point in marker.points] or [[round(marker.pose.position.x, 3),
+                                                                round(marker.pose.position.y, 3)]]
+                    color = marker.color
+                    self._frontiers[key] = {"frame": _frame(marker.header), "kind": MARKER_KINDS[marker.type],
+                                            "rgba": [color.r, color.g, color.b, color.a],
+                                            "scale": marker.scale.x, "points": points}
+            frontiers = list(self._frontiers.values())
+        self._set("frontiers", frontiers)

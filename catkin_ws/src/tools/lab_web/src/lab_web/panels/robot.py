@@ -1,0 +1,112 @@
+"""The robot panel: the driven robot from <ns>/odom, its trail, and the newest LiDAR sweep from <ns>/scan in the
+world (odom) frame, with the sim time and real-time factor. The LiDAR's fixed offset from the robot's base comes
+from /tf_static and is composed with odom's pose, which saves following /tf at 30 Hz and more."""
+import threading
+import time
+
+import rospy
+from nav_msgs.msg import Odometry
+from sensor_msgs.msg import LaserScan
+from tf2_msgs.msg import TFMessage
+
+from lab_web import scene
+from lab_web.panels.base import Panel, Versioned
+from lab_web.ros_context import now_s
+
+RTF_WINDOW_S = 1.0
+
+
+class RobotPanel(Panel):
+    name = "robot"
+    FRAMES = {
+        "state": '{"stamp_ms": wall ms when the newest state arrived, "sim_time": s | null, "rtf": float | null, '
+                 '"robot": {"x", "y", "yaw", "v", "w"} | null, "trail": {"reset": bool, "points": [[x, y], ...]} '
+                 '(reset true: replace the page\'s trail with points; false: append them; a page keeps at most '
+                 '3000 points), "scan": [[x, y], ...] (world-frame LiDAR hits of the newest sweep)}  <= 25 per second',
+    }
+
+    def __init__(self, ros):
+        super().__init__(ros)
+        self._lock = threading.Lock()
+        self.state = Versioned()
+        self.trail = scene.Trail()
+        self._odom = None
+        self._scan_points = []
+        self._clock_samples = []
+        self._static_transforms = {}
+        self._odom_topic, self._scan_topic = ros.name("odom"), ros.name("scan")
+        for topic in (self._odom_topic, self._scan_topic):
+            ros.counts(topic)
+        self._subscribers = [
+            rospy.Subscriber(self._odom_topic, Odometry, self._on_odom, queue_size=1),
+            rospy.Subscriber(self._scan_topic, LaserScan, self._on_scan, queue_size=1),
+            rospy.Subscriber("/tf_static", TFMessage, self._on_tf_static, queue_size=10),
+        ]
+
+    def frames(self, session):
+        state = session.lacks("state", self.state)
+        if state is None:
+            return []
+        with self._lock:
+            reset, points, session.trail_cursor = self.trail.since(session.trail_cursor)
+        return [("state", dict(state, trail={"reset": reset, "points": points}))]
+
+    def robot_pose(self):
+        """The robot's Pose2D in the odom frame, or None before its first odometry."""
+        with self._lock:
+            return self._odom[0] if self._odom else None
+
+    def _on_odom(self, odom):
+        pose = odom.pose.pose
+        robot = scene.Pose2D(pose.position.x, pose.position.y, scene.yaw_of(pose.orientation.z, pose.orientation.w))
+        with self._lock:
+            self._odom = (robot, odom.twist.twist.linear.x, odom.twist.twist.angular.z, odom.child_frame_id)
+            self.trail.add(robot.x, robot.y)
+        self.ros.count(self._odom_topic)
+        self._publish_state()
+
+    def _on_scan(self, scan):
+        self.ros.count(self._scan_topic)
+        with self._lock:
+            if self._odom is None:
+                return
+            robot, _, _, base_frame = self._odom
+            offset = scene.sensor_offset(self._static_transforms, base_frame, scan.header.frame_id)
+        if offset is None:
+            return   # /tf_static has not named the LiDAR's place on the robot yet
+        points = scene.scan_points(scan.ranges, scan.angle_min, scan.angle_increment, scan.range_min,
+                                   scan.range_max, scene.compose(robot, offset))
+        with self._lock:
+            self._scan_points = points
+        self._publish_state()
+
+    def _on_tf_static(self, message):
+        with self._lock:
+            for stamped in message.transforms:
+                transform = stamped.transform
+                self._static_transforms[stamped.child_frame_id] = (stamped.header.frame_id, scene.Pose2D(
+                    transform.translation.x, transform.translation.y,
+                    scene.yaw_of(transform.rotation.z, transform.rotation.w)))
+
+    def _sim_time_and_rtf(self):
+        """(sim time s or None without /use_sim_time, real-time factor over the last second or None)."""
+        sim = rospy.get_time()
+        wall = now_s()
+        samples = self._clock_samples
+        if samples and sim < samples[-1][1]:
+            samples.clear()   # time went back (/gazebo/reset_simulation): measure afresh
+        samples.append((wall, sim))
+        while len(samples) > 2 and wall - samples[1][0] >= RTF_WINDOW_S:
+            samples.pop(0)
+        if rospy.rostime.is_wallclock():
+            return None, None
+        (wall0, sim0) = samples[0]
+        rtf = (sim - sim0) / (wall - wall0) if wall - wall0 >= 0.2 else None
+        return sim, rtf
+
+    def _publish_state(self):
+        with self._lock:
+            sim, rtf = self._sim_time_and_rtf()
+            robot = scene.robot_state(*self._odom[:3]) if self._odom else None
+            self.state.set({"stamp_ms": int(time.time() * 1000), "sim_time": sim, "rtf": rtf, "robot": robot,
+                            "scan": self._scan_points})

@@ -1,0 +1,107 @@
+"""What the server panels share on the ROS side: names in the robot's namespace, the publish-rate meter, the set
+of topics a panel already counts, cached publishers, and service calls that give up after a timeout."""
+import threading
+import time
+from typing import Dict, List, NamedTuple, Tuple
+
+import rosgraph
+import rospy
+
+from lab_web.rates import TopicRates
+
+SERVICE_WAIT_S = 2.0
+"""A service that is not offered within this long is reported as not available."""
+MODEL_CALL_TIMEOUT_S = 10.0
+"""The simulator's /gazebo/* calls (spawn, move, delete, reset) answer at once: one that has not within this long
+is abandoned and reported."""
+DEFAULT_SERVICE_TIMEOUT_S = 120.0
+"""The service form's calls (~service_timeout): longer than any course service takes on purpose (the Week 4
+approach gives up after 60 s of sim time), short enough that a callback stuck for ever frees its worker."""
+
+
+class BridgeError(Exception):
+    """A request that could not be done; the text is shown on the page."""
+
+
+def now_s():
+    """Wall time for rates and throttles (the page and its user live in wall time)."""
+    return time.monotonic()
+
+
+class GraphState(NamedTuple):
+    """The master's system state, read once per round for every panel."""
+
+    publishers: List[Tuple[str, List[str]]]
+    subscribers: List[Tuple[str, List[str]]]
+    services: List[Tuple[str, List[str]]]
+    topic_types: Dict[str, str]
+
+
+class RosContext:
+    """`robot_namespace`: the robot whose topics the panels show ("": the global namespace);
+    `service_timeout_s`: how long a service form call may take before it is abandoned."""
+
+    def __init__(self, robot_namespace="", service_timeout_s=DEFAULT_SERVICE_TIMEOUT_S):
+        self.service_timeout_s = service_timeout_s
+        self.namespace = rosgraph.names.canonicalize_name(robot_namespace).rstrip("/") if robot_namespace else ""
+        self.rates = TopicRates()
+        self._lock = threading.Lock()
+        self._counted = set()
+        self._publishers = {}
+
+    def name(self, relative):
+        """`relative` in the robot's namespace."""
+        return "{}/{}".format(self.namespace, relative)
+
+    def count(self, topic):
+        """A message arrived on `topic`, which a panel subscribes to anyway (the graph panel's rate)."""
+        self.rates.count(topic, now_s())
+
+    def counts(self, topic, on=True):
+        """A panel counts `topic`'s messages itself (on) or no longer (off): the graph panel need not."""
+        with self._lock:
+            (self._counted.add if on else self._counted.discard)(topic)
+
+    def counted(self):
+        with self._lock:
+            return set(self._counted)
+
+    def publisher(self, topic, message_class, latch=False):
+        """One publisher per topic for the whole server."""
+        with self._lock:
+            publisher = self._publishers.get(topic)
+            if publisher is None:
+                publisher = self._publishers[topic] = rospy.Publisher(topic, message_class, queue_size=1, latch=latch)
+            return publisher
+
+    @staticmethod
+    def call(name, service_class, *args, timeout_s=MODEL_CALL_TIMEOUT_S):
+        """The reply of `name`, or BridgeError naming the service: not offered, failed, or no answer within
+        `timeout_s`. rospy's calls have no timeout, so the call's connection is shut when it expires, which ends
+        the wait in this thread (the service's own callback runs on; its late reply goes nowhere)."""
+        try:
+            rospy.wait_for_service(name, SERVICE_WAIT_S)
+        except rospy.ROSException:
+            raise BridgeError("{} is not available: is the simulator (or the node offering it) running?"
+                              .format(name)) from None
+        proxy = rospy.ServiceProxy(name, service_class, persistent=True)   # persistent: close() reaches the socket
+        expired = threading.Event()
+
+        def expire():
+            expired.set()
+            proxy.close()
+        timer = threading.Timer(timeout_s, expire)
+        timer.daemon = True
+        timer.start()
+        try:
+            return proxy(*args)
+        except Exception as error:   # noqa: BLE001 - whatever the shut connection raised, the cause is the timeout
+            if expired.is_set():
+                raise BridgeError("{} did not answer within {:g} s: its node may be stuck in its callback (the call "
+                                  "was abandoned)".format(name, timeout_s)) from None
+            if isinstance(error, (rospy.ServiceException, rospy.ROSSerializationException)):
+                raise BridgeError("{} failed: {}".format(name, error)) from None
+            raise
+        finally:
+            timer.cancel()
+            proxy.close()

@@ -1,0 +1,139 @@
+/*
+ * The navigation panel: amcl's and move_base's displays as RViz's turtlebot3_navigation view draws them: the
+ * global and local costmaps (RViz's costmap colours at its Map display's alpha 0.7), the global plan (green) and
+ * local plan (yellow), the particle cloud as arrows (RViz's PoseArray: red-orange, 0.3 m), amcl's pose with its
+ * position covariance as an ellipse of one standard deviation, and move_base's current goal (magenta arrow).
+ * explore_lite's frontiers as its markers say (points of each frontier's cells, a sphere at each, in their colours).
+ * Each item is drawn in its own frame: the fixed frame as it is, odom through map -> odom; others not at all.
+ */
+import {addMessage, app, decodePng, isNumber, labView, requestRender} from '../core.js';
+import {addLayer, currentView, drawGridImage, strokeLine, tracePath, worldToPixel} from '../view.js';
+
+const COSTMAP_ALPHA = 0.7;
+const COLORS = {global: '#00b000', local: '#e0c000', particle: 'rgb(255, 25, 0)', amcl: '#4060ff',
+  goal: '#ff00ff'};
+const PARTICLE_LENGTH_M = 0.3;
+const costmaps = {};            // name -> {image, frame}
+let nav = null;
+
+function onCostmap(frame) {
+  if (frame.error) {
+    addMessage(`${frame.name} costmap: ${frame.error}`);
+    return;
+  }
+  decodePng(`${frame.name} costmap`, frame.png, (image) => {
+    costmaps[frame.name] = {image, frame};
+    labView.costmaps += 1;
+    requestRender('world');
+  });
+}
+
+function onNav(frame) {
+  nav = frame;
+  labView.nav = frame;
+  requestRender('world');
+}
+
+function fixedFrame() {
+  return (app.fixed && app.fixed.frame) || 'odom';
+}
+
+/** Whether an item in `frame` belongs to the layer drawing `layerFrame` ('fixed' or 'odom'). */
+function inLayer(frame, layerFrame) {
+  if (frame === fixedFrame()) return layerFrame === 'fixed';
+  return frame === 'odom' && layerFrame === 'odom';
+}
+
+function arrow(ctx, pose, lengthPx, color, width) {
+  const [x, y, yaw] = pose;
+  const [ax, ay] = worldToPixel(x, y);
+  const [bx, by] = [ax + lengthPx * Math.cos(yaw), ay - lengthPx * Math.sin(yaw)];
+  ctx.lineWidth = width;
+  strokeLine(ctx, ax, ay, bx, by, color);
+  const head = Math.max(lengthPx * 0.3, 3);
+  for (const side of [-1, 1]) {
+    const back = yaw + Math.PI - side * 0.5;
+    strokeLine(ctx, bx, by, bx + head * Math.cos(back), by - head * Math.sin(back), color);
+  }
+}
+
+/** One standard deviation of the position: the ellipse's axes are the square roots of the covariance's
+ *  eigenvalues, along its eigenvectors. */
+export function covarianceEllipse(xx, xy, yy) {
+  const mean = (xx + yy) / 2;
+  const spread = Math.sqrt(((xx - yy) / 2) ** 2 + xy ** 2);
+  return {major: Math.sqrt(Math.max(mean + spread, 0)), minor: Math.sqrt(Math.max(mean - spread, 0)),
+    angle: 0.5 * Math.atan2(2 * xy, xx - yy)};
+}
+
+function drawAmcl(ctx, amcl) {
+  const [x, y, yaw] = amcl.pose;
+  const [xx, xy, yy] = amcl.covariance;
+  const {major, minor, angle} = covarianceEllipse(xx, xy, yy);
+  const scale = currentView().scale;
+  const [px, py] = worldToPixel(x, y);
+  ctx.save();
+  ctx.globalAlpha = 0.5;
+  ctx.fillStyle = COLORS.amcl;
+  ctx.beginPath();
+  ctx.ellipse(px, py, Math.max(major * scale, 1), Math.max(minor * scale, 1), -angle, 0, 2 * Math.PI);
+  ctx.fill();
+  ctx.restore();
+  arrow(ctx, [x, y, yaw], 0.4 * scale, COLORS.amcl, 3);
+}
+
+function drawLayer(ctx, layerFrame) {
+  for (const name of ['global', 'local']) {
+    const costmap = costmaps[name];
+    if (costmap && inLayer(costmap.frame.frame, layerFrame)) drawGridImage(ctx, costmap.image, costmap.frame, COSTMAP_ALPHA);
+  }
+  if (!nav) return;
+  for (const name of ['global', 'local']) {
+    const plan = (nav.plans || {})[name];
+    if (!plan || !inLayer(plan.frame, layerFrame) || plan.points.length < 2) continue;
+    tracePath(ctx, plan.points);
+    ctx.lineWidth = 3;
+    ctx.lineJoin = 'round';
+    ctx.strokeStyle = COLORS[name];
+    ctx.stroke();
+  }
+  const scale = currentView().scale;
+  if (nav.particles && inLayer(nav.particles.frame, layerFrame)) {
+    for (const pose of nav.particles.poses) arrow(ctx, pose, PARTICLE_LENGTH_M * scale, COLORS.particle, 2);
+  }
+  if (nav.amcl && inLayer(nav.amcl.frame, layerFrame) && nav.amcl.covariance.every(isNumber)) drawAmcl(ctx, nav.amcl);
+  if (nav.goal && inLayer(nav.goal.frame, layerFrame)) arrow(ctx, nav.goal.pose, 0.5 * scale, COLORS.goal, 4);
+  for (const marker of nav.frontiers || []) {
+    if (inLayer(marker.frame, layerFrame)) drawMarker(ctx, marker, scale);
+  }
+}
+
+function drawMarker(ctx, marker, scale) {
+  const [r, g, b, a] = marker.rgba.map((value) => (isNumber(value) ? value : 1));
+  ctx.fillStyle = `rgba(${Math.round(r * 255)}, ${Math.round(g * 255)}, ${Math.round(b * 255)}, ${a})`;
+  const size = Math.max(marker.scale * scale, 2);
+  for (const [x, y] of marker.points) {
+    const [px, py] = worldToPixel(x, y);
+    if (marker.kind === 'points') {
+      ctx.fillRect(px - size / 2, py - size / 2, size, size);
+    } else {
+      ctx.beginPath();
+      ctx.arc(px, py, size / 2, 0, 2 * Math.PI);
+      ctx.fill();
+    }
+  }
+}
+
+function setup() {
+  labView.costmaps = 0;
+  labView.covarianceEllipse = covarianceEllipse;
+  addLayer(16, (ctx) => drawLayer(ctx, 'fixed'), 'fixed');
+  addLayer(17, (ctx) => drawLayer(ctx, 'odom'), 'odom');
+}
+
+function onHello() {
+  nav = null;
+  for (const name of Object.keys(costmaps)) delete costmaps[name];
+}
+
+export default {name: 'nav', setup, onHello, frames: {costmap: onCostmap, nav: onNav}};

@@ -1,0 +1,275 @@
+"""The page as RViz's Map display, fixed frame, navigation displays and publishing tools, in a real headless
+Chromium: /map drawn cell by cell (unknown grey, free white, occupied black) where its origin and resolution put it,
+the robot and its LiDAR sweep placed through map -> odom -> base_footprint, a costmap cell, a plan, a particle's
+arrow and amcl's covariance ellipse where they are, and drags with "2D Pose Estimate", "2D Nav Goal" and "Publish
+Point" publishing what RViz would. No simulator: a probe node publishes the map, the transforms, odometry and one
+scan, so every pixel's place is known exactly."""
+import math
+
+import pytest
+from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.by import By
+
+from roslab import wait_until
+
+from .conftest import open_page, start_web_server
+
+RESOLUTION, ORIGIN, SIZE = 0.1, (-1.0, -1.0), 40
+OCCUPIED_CELL, UNKNOWN_CELL = (15, 5), (30, 30)
+MAP_TO_ODOM = (1.0, 0.5, math.pi / 2)
+ODOM_ROBOT = (0.5, 0.0)
+SCAN_RANGE_M = 1.0
+BLACK, WHITE, UNKNOWN = (0, 0, 0), (255, 255, 255), (0x70, 0x89, 0x86)
+ROBOT_RGB, SCAN_RGB = (0x1F, 0x4E, 0xA3), (0xE0, 0x30, 0x30)
+TOOL_TOPICS = {"/initialpose": "geometry_msgs/PoseWithCovarianceStamped",
+               "/move_base_simple/goal": "geometry_msgs/PoseStamped", "/clicked_point": "geometry_msgs/PointStamped",
+               "/move_base/cancel": "actionlib_msgs/GoalID"}
+RVIZ_COVARIANCE = {0: 0.25, 7: 0.25, 35: 0.06853891945200942}
+
+
+def quaternion(yaw):
+    return {"z": math.sin(yaw / 2), "w": math.cos(yaw / 2)}
+
+
+def occupancy_grid():
+    cells = [0] * (SIZE * SIZE)
+    for row in range(25, SIZE):
+        for column in range(25, SIZE):
+            cells[row * SIZE + column] = -1
+    column, row = OCCUPIED_CELL
+    cells[row * SIZE + column] = 100
+    return {"header": {"frame_id": "map"},
+            "info": {"resolution": RESOLUTION, "width": SIZE, "height": SIZE,
+                     "origin": {"position": {"x": ORIGIN[0], "y": ORIGIN[1]}, "orientation": {"w": 1.0}}},
+            "data": cells}
+
+
+def transform(parent, child, x, y, yaw):
+    return {"transforms": [{"header": {"frame_id": parent}, "child_frame_id": child, "transform": {
+        "translation": {"x": x, "y": y}, "rotation": quaternion(yaw)}}]}
+
+
+@pytest.fixture(scope="module")
+def maps_home(tmp_path_factory):
+    return tmp_path_factory.mktemp("home")
+
+
+@pytest.fixture(scope="module")
+def page(ros_master, browser, maps_home):
+    base, _ = start_web_server(ros_master, "_maps_home:={}".format(maps_home))
+    probe = ros_master.probe()
+    probe.publish("/tf_static", "tf2_msgs/TFMessage", transform("base_footprint", "base_scan", 0.0, 0.0, 0.0))
+    probe.publish("/odom", "nav_msgs/Odometry", {"header": {"frame_id": "odom"}, "child_frame_id": "base_footprint",
+                                                 "pose": {"pose": {"position": {"x": ODOM_ROBOT[0], "y": ODOM_ROBOT[1]},
+                                                                   "orientation": {"w": 1.0}}}})
+    open_page(browser, base, "labView.connected && labView.robot")
+
+    def scan_shown():
+        """A scan that came before /tf_static named the LiDAR's place is not drawn: send it until one is."""
+        probe.publish("/scan", "sensor_msgs/LaserScan", {"header": {"frame_id": "base_scan"}, "angle_min": 0.0,
+                                                         "angle_increment": 0.1, "range_min": 0.1, "range_max": 3.5,
+                                                         "ranges": [SCAN_RANGE_M]}, wait_s=1.0)
+        return browser.script("return app.state.scan.length === 1;")
+
+    wait_until(scan_shown, 10, "the page to show the scan", interval_s=0.2)
+    before_the_map = browser.script("return labView.fixedFrame;")
+    probe.publish("/map", "nav_msgs/OccupancyGrid", occupancy_grid())
+    wait_until(lambda: browser.script("return labView.maps;") >= 1, 10, "the page to draw the map")
+
+    def odom_placed():
+        probe.publish("/tf", "tf2_msgs/TFMessage", transform("map", "odom", *MAP_TO_ODOM), wait_s=1.0)
+        odom = browser.script("return app.fixed && app.fixed.odom;")
+        return odom is not None and abs(odom[2] - MAP_TO_ODOM[2]) < 1e-3
+
+    wait_until(odom_placed, 10, "the page to place odom in the map frame", interval_s=0.2)
+    browser.fixed_frame_before_the_map = before_the_map
+    browser.probe = probe
+    for topic, kind in TOOL_TOPICS.items():
+        probe.subscribe(topic, kind)
+    return browser
+
+
+def pixel(page, x, y):
+    """(r, g, b) the page drew at fixed-frame point (x, y)."""
+    px, py = page.script("return labView.worldToPixel(arguments[0], arguments[1]);", x, y)
+    return tuple(int(channel) for channel in page.canvas_pixels("world")[int(py), int(px)])
+
+
+def cell_centre(column, row):
+    return ORIGIN[0] + (column + 0.5) * RESOLUTION, ORIGIN[1] + (row + 0.5) * RESOLUTION
+
+
+def in_map(x, y):
+    mx, my, yaw = MAP_TO_ODOM
+    return mx + math.cos(yaw) * x - math.sin(yaw) * y, my + math.sin(yaw) * x + math.cos(yaw) * y
+
+
+def close_to(rgb, expected, tolerance=12):
+    return all(abs(a - b) <= tolerance for a, b in zip(rgb, expected))
+
+
+def test_the_fixed_frame_is_odom_until_a_map_comes_then_map(page):
+    assert page.fixed_frame_before_the_map == "odom"
+    assert page.script("return labView.fixedFrame;") == "map"
+
+
+def test_an_occupied_cell_is_black_free_white_unknown_grey_where_the_map_puts_them(page):
+    assert pixel(page, *cell_centre(*OCCUPIED_CELL)) == BLACK
+    assert pixel(page, *cell_centre(OCCUPIED_CELL[0] - 2, OCCUPIED_CELL[1])) == WHITE
+    assert pixel(page, *cell_centre(*UNKNOWN_CELL)) == UNKNOWN
+    assert page.console_errors() == []
+
+
+def test_the_robot_and_its_scan_are_placed_through_map_odom_base_footprint(page):
+    robot = in_map(*ODOM_ROBOT)                                  # (1.0, 1.0), heading +y in the map
+    assert close_to(pixel(page, robot[0] + 0.05, robot[1] - 0.05), ROBOT_RGB)
+    assert not close_to(pixel(page, *ODOM_ROBOT), ROBOT_RGB)     # not where odom alone would put it
+    hit = in_map(ODOM_ROBOT[0] + SCAN_RANGE_M, ODOM_ROBOT[1])    # 1 m ahead: (1.0, 2.0) in the map
+    assert close_to(pixel(page, *hit), SCAN_RGB)
+
+
+def drag(page, tool, start, end=None):
+    """Pick `tool` (a button id) and drag on the top view from fixed-frame point `start` to `end` (a click
+    without `end`); returns the canvas's metres per pixel."""
+    canvas = page.driver.find_element(By.ID, "world")
+    middle = page.script("const r = arguments[0].getBoundingClientRect(); return [r.width / 2, r.height / 2];",
+                         canvas)
+
+    def offset(x, y):
+        px, py = page.script("return labView.worldToPixel(arguments[0], arguments[1]);", x, y)
+        return round(px - middle[0]), round(py - middle[1])
+
+    wait_until(lambda: page.driver.find_element(By.ID, tool).is_displayed(), 10,
+               "the tool to show (the probe subscribes to its topic)")
+    page.driver.find_element(By.ID, tool).click()
+    actions = ActionChains(page.driver).move_to_element_with_offset(canvas, *offset(*start)).click_and_hold()
+    if end is not None:
+        actions = actions.move_by_offset(5, 5).move_to_element_with_offset(canvas, *offset(*end))
+    actions.release().perform()
+    return 1.0 / abs(offset(1.0, 0.0)[0] - offset(0.0, 0.0)[0])
+
+
+def one_message(page, topic):
+    return page.probe.wait_for_message(topic, 5)
+
+
+def yaw_of(orientation):
+    return 2.0 * math.atan2(orientation["z"], orientation["w"])
+
+
+def test_2d_pose_estimate_publishes_initialpose_as_rviz_does(page):
+    page.probe.take("/initialpose")
+    metres_per_pixel = drag(page, "tool-initial-pose", (0.5, 0.0), (0.5, 1.0))
+    message = one_message(page, "/initialpose")
+    assert message["header"]["frame_id"] == "map"
+    pose = message["pose"]["pose"]
+    assert math.hypot(pose["position"]["x"] - 0.5, pose["position"]["y"]) <= 2 * metres_per_pixel
+    assert yaw_of(pose["orientation"]) == pytest.approx(math.pi / 2, abs=0.02)
+    covariance = message["pose"]["covariance"]
+    assert covariance == [RVIZ_COVARIANCE.get(i, 0.0) for i in range(36)]
+    assert not page.driver.find_element(By.ID, "tool-initial-pose").get_attribute("class").count("active")
+
+
+def test_2d_nav_goal_publishes_the_goal_in_the_map_frame_facing_the_drag(page):
+    page.probe.take("/move_base_simple/goal")
+    metres_per_pixel = drag(page, "tool-nav-goal", (0.0, 0.5), (-1.0, 0.5))
+    message = one_message(page, "/move_base_simple/goal")
+    assert message["header"]["frame_id"] == "map"
+    assert math.hypot(message["pose"]["position"]["x"], message["pose"]["position"]["y"] - 0.5) <= 2 * metres_per_pixel
+    assert abs(yaw_of(message["pose"]["orientation"])) == pytest.approx(math.pi, abs=0.02)
+
+
+def test_publish_point_and_cancel_goal(page):
+    for topic in ("/clicked_point", "/move_base/cancel"):
+        page.probe.take(topic)
+    metres_per_pixel = drag(page, "tool-publish-point", (0.2, 0.3))
+    point = one_message(page, "/clicked_point")
+    assert point["header"]["frame_id"] == "map"
+    assert math.hypot(point["point"]["x"] - 0.2, point["point"]["y"] - 0.3) <= 2 * metres_per_pixel
+    wait_until(lambda: page.driver.find_element(By.ID, "cancel-goal").is_displayed(), 10, "the cancel button")
+    page.driver.find_element(By.ID, "cancel-goal").click()
+    assert one_message(page, "/move_base/cancel")["id"] == ""
+    assert page.script("return labView.errors;") == []
+
+
+PARTICLE, PLAN_Y, LETHAL_CELL_AT = (2.0, 0.5, 0.0), 2.5, (2.05, -0.85)
+AMCL_POSE, AMCL_SIGMAS = (-0.5, 1.5, -math.pi / 2), (0.2, 0.1)
+PARTICLE_RGB, PLAN_RGB, LETHAL_OVER_WHITE = (255, 25, 0), (0, 176, 0), (255, 77, 255)
+FRONTIER_CELLS, FRONTIER_SPHERE = [(-0.5, -0.5), (-0.4, -0.5)], (2.5, 2.0)
+
+
+def stamped_pose(x, y, yaw):
+    return {"position": {"x": x, "y": y}, "orientation": quaternion(yaw)}
+
+
+@pytest.fixture(scope="module")
+def navigation(page):
+    probe = page.probe
+    probe.publish("/particlecloud", "geometry_msgs/PoseArray", {"header": {"frame_id": "map"},
+                                                                "poses": [stamped_pose(*PARTICLE)]})
+    probe.publish("/move_base/NavfnROS/plan", "nav_msgs/Path", {"header": {"frame_id": "map"}, "poses": [
+        {"pose": stamped_pose(x, PLAN_Y, 0.0)} for x in (-0.5, 0.5)]})
+    covariance = [0.0] * 36
+    covariance[0], covariance[7] = AMCL_SIGMAS[0] ** 2, AMCL_SIGMAS[1] ** 2
+    probe.publish("/amcl_pose", "geometry_msgs/PoseWithCovarianceStamped", {"header": {"frame_id": "map"}, "pose": {
+        "pose": stamped_pose(*AMCL_POSE), "covariance": covariance}})
+    probe.publish("/move_base/global_costmap/costmap", "nav_msgs/OccupancyGrid", {
+        "header": {"frame_id": "map"}, "info": {"resolution": RESOLUTION, "width": 4, "height": 4, "origin": {
+            "position": {"x": 2.0, "y": -0.9}, "orientation": {"w": 1.0}}}, "data": [100] + [0] * 15})
+    marker = {"header": {"frame_id": "map"}, "ns": "frontiers", "action": 0, "pose": {"orientation": {"w": 1.0}}}
+    probe.publish("/explore/frontiers", "visualization_msgs/MarkerArray", {"markers": [
+        dict(marker, id=0, type=8, scale={"x": 0.1, "y": 0.1}, color={"b": 1.0, "a": 1.0},
+             points=[{"x": x, "y": y} for x, y in FRONTIER_CELLS]),
+        dict(marker, id=1, type=2, scale={"x": 0.3, "y": 0.3, "z": 0.3}, color={"g": 1.0, "a": 1.0},
+             pose={"position": {"x": FRONTIER_SPHERE[0], "y": FRONTIER_SPHERE[1]}, "orientation": {"w": 1.0}})]})
+    wait_until(lambda: page.script("return labView.costmaps >= 1 && !!labView.nav && !!labView.nav.amcl && "
+                                   "!!labView.nav.particles && !!(labView.nav.plans || {}).global && "
+                                   "labView.nav.frontiers.length === 2;"), 10,
+               "the page to show the navigation displays")
+    return page
+
+
+def test_a_particle_is_an_arrow_and_a_plan_a_line_where_they_are(navigation):
+    x, y, _ = PARTICLE
+    assert close_to(pixel(navigation, x + 0.2, y), PARTICLE_RGB)          # along the arrow's 0.3 m shaft
+    assert not close_to(pixel(navigation, x - 0.1, y), PARTICLE_RGB)      # nothing behind it
+    assert close_to(pixel(navigation, 0.0, PLAN_Y), PLAN_RGB)
+
+
+def test_a_lethal_costmap_cell_is_rvizs_purple_over_the_map(navigation):
+    assert close_to(pixel(navigation, *LETHAL_CELL_AT), LETHAL_OVER_WHITE)
+    assert pixel(navigation, LETHAL_CELL_AT[0] + 0.1, LETHAL_CELL_AT[1]) == WHITE   # a free cost: transparent
+
+
+def test_the_covariance_ellipse_is_one_standard_deviation_along_each_axis(navigation):
+    x, y, _ = AMCL_POSE
+    sx, sy = AMCL_SIGMAS
+    assert pixel(navigation, x + 0.8 * sx, y) != WHITE and pixel(navigation, x + 1.25 * sx, y) == WHITE
+    assert pixel(navigation, x, y + 0.8 * sy) != WHITE and pixel(navigation, x, y + 1.4 * sy) == WHITE
+    assert page_errors(navigation) == []
+
+
+def page_errors(page):
+    return page.script("return labView.errors;") + page.console_errors()
+
+
+def test_save_map_runs_map_saver_into_the_folder_named_under_home(page, maps_home):
+    for field, value in (("map-folder", "course_maps"), ("map-name", "arena")):
+        box = page.driver.find_element(By.ID, field)
+        box.clear()
+        box.send_keys(value)
+    page.driver.find_element(By.ID, "save-map-button").click()
+
+    def saved():
+        """map_saver takes the next /map: the probe's is not latched as gmapping's is, so send it again."""
+        page.probe.publish("/map", "nav_msgs/OccupancyGrid", occupancy_grid(), wait_s=0.5)
+        return "saved" in page.driver.find_element(By.ID, "save-map-reply").text
+
+    wait_until(saved, 30, "map_saver to save the map", interval_s=0.5)
+    assert (maps_home / "course_maps" / "arena.pgm").read_bytes().startswith(b"P5")
+    assert "resolution: 0.1" in (maps_home / "course_maps" / "arena.yaml").read_text()
+
+
+def test_explore_frontiers_are_drawn_as_their_markers_say(navigation):
+    assert pixel(navigation, *FRONTIER_CELLS[0]) == (0, 0, 255)
+    assert pixel(navigation, *FRONTIER_SPHERE) == (0, 255, 0)
