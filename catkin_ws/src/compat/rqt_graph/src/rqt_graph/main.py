@@ -1,10 +1,11 @@
 """`rosrun rqt_graph rqt_graph`: the running graph read once from the master, drawn by Graphviz's dot.
 
-With a display the picture opens in a window titled rqt_graph (close it to end). Without one it is written to
-rosgraph.png in the current folder (where rqt_graph's own export would go), and one line gives its path and the
-browser view, whose graph panel stays live. No ROS node is registered: the master's system state is read through
+With a display the picture opens in a window titled rqt_graph (close it or press Ctrl-C to end). Without one it is
+written to rosgraph.png in the current folder (where rqt_graph's own export would go), and one line gives its path
+and the browser view, whose graph panel stays live. No ROS node is registered: the master's system state is read through
 rosgraph's API, as rosnode and rostopic read it.
 """
+import signal
 import subprocess
 import sys
 from pathlib import Path
@@ -16,6 +17,7 @@ from rqt_graph.dot_graph import node_graph, to_dot
 
 OUTPUT_NAME = "rosgraph.png"
 DOT_TIMEOUT_S = 30
+SIGNAL_CHECK_MS = 200
 COMMAND = "rosrun rqt_graph rqt_graph"
 
 
@@ -48,6 +50,7 @@ def render_png(dot_text):
 
 def show_window(png):
     """The picture in a scrollable Qt window until it is closed."""
+    from PyQt5.QtCore import QTimer
     from PyQt5.QtGui import QPixmap
     from PyQt5.QtWidgets import QApplication, QLabel, QScrollArea
 
@@ -61,6 +64,10 @@ def show_window(png):
     window.setWindowTitle("rqt_graph")
     window.resize(min(pixmap.width() + 20, 1600), min(pixmap.height() + 20, 1000))
     window.show()
+    signal.signal(signal.SIGINT, lambda *_: app.quit())   # Ctrl-C closes it, as rqt's own window
+    wake_python = QTimer()   # Qt's loop lets Python run its signal handlers only between events
+    wake_python.start(SIGNAL_CHECK_MS)
+    wake_python.timeout.connect(lambda: None)
     app.exec_()
 
 
