@@ -8,7 +8,8 @@
 #   lab's package of the same name (the ROS overlay rule); the lab's stay available otherwise. The workspace is
 #   created when it does not exist, as an overlay of the lab ready for `catkin build` (the course's command) or
 #   `catkin_make`, and sourced once built; before its first build its src folder is put first on
-#   ROS_PACKAGE_PATH, and rospack's 60 s cache is off (ROS_CACHE_TIMEOUT=0 unless set), so a package created there
+#   ROS_PACKAGE_PATH (and, as a source-only workspace, on CMAKE_PREFIX_PATH, where rosrun and roslaunch look for
+#   executables), and rospack's 60 s cache is off (ROS_CACHE_TIMEOUT=0 unless set), so a package created there
 #   is found at once, also in a terminal opened before it existed. LAB_STUDENT_WS=off leaves it out;
 #   LAB_STUDENT_WS=<folder> uses another folder.
 # - bash: rosbash's roscd, rosls, rosed, roscp, rospd, rosd and the other ROS shell functions, with Tab
@@ -49,7 +50,9 @@ fi
 
 # The student's workspace, on top of the lab's.
 _lab_student_ws="${LAB_STUDENT_WS:-${HOME:+$HOME/catkin_ws}}"
+_lab_student_src=""
 if [ -n "$_lab_student_ws" ] && [ "$_lab_student_ws" != off ] && [ -f "$_lab_devel/setup.sh" ]; then
+    _lab_student_src="$_lab_student_ws/src"
     if [ ! -e "$_lab_student_ws" ]; then
         if _lab_out="$(mkdir -p "$_lab_student_ws/src" && catkin_init_workspace "$_lab_student_ws/src" 2>&1 \
             && catkin config --init --workspace "$_lab_student_ws" --extend "$_lab_devel" \
@@ -76,6 +79,16 @@ if [ -n "$_lab_student_ws" ] && [ "$_lab_student_ws" != off ] && [ -f "$_lab_dev
         # Not built yet: its source folder first on the package path all the same, as the course's machines have
         # it, so a package created there is found at once, before the lab's package of the same name.
         export ROS_PACKAGE_PATH="$_lab_student_ws/src${ROS_PACKAGE_PATH:+:$ROS_PACKAGE_PATH}"
+        # And first on CMAKE_PREFIX_PATH as a source-only catkin workspace (a marker folder whose .catkin names that
+        # src): rosrun and roslaunch look for a package's executables in the first workspace that has the package
+        # (catkin_find), which was the lab's devel space with its relays of the reference package of the same name,
+        # so `rosrun week4_services move_client.py` offered a "non-unique executable" menu (or roslaunch ran the
+        # lab's node). Sourcing any devel/setup.bash, the student's after the first build too, takes it out again.
+        _lab_marker="$_lab_student_ws/.lab_source_space"
+        if { mkdir -p "$_lab_marker" && printf '%s' "$_lab_student_ws/src" > "$_lab_marker/.catkin"; } 2>/dev/null; then
+            export CMAKE_PREFIX_PATH="$_lab_marker${CMAKE_PREFIX_PATH:+:$CMAKE_PREFIX_PATH}"
+        fi
+        unset _lab_marker
     fi
     # rospack reads the package folders at every call instead of trusting its cache for 60 s: a package created a
     # moment ago (or removed) is found at once (about 10 ms of CPU per call).
@@ -113,8 +126,27 @@ if [ "$_lab_shell" = bash ]; then
         # cache for ever): a package created in a terminal's lifetime stayed unknown there, or worse, roscd went to
         # the lab's package of the same name. In this shell rospack reads the package folders at every call.
         rospack() { ROS_CACHE_TIMEOUT=0 command rospack "$@"; }
+        if [ -n "${_lab_student_src:-}" ]; then
+            # roscd and rosed say so when they take you into one of the lab's reference packages (the exercises'
+            # model answers), which happens only while your workspace has no package of that name: a file created
+            # or changed there would be the lab's, not yours. (Read-only sources would not stop root, a container's
+            # usual user, and would break git pull.)
+            eval "_lab_rosbash_roscd() $(declare -f roscd | tail -n +2)"
+            eval "_lab_rosbash_rosed() $(declare -f rosed | tail -n +2)"
+            roscd() { _lab_rosbash_roscd "$@" && _lab_reference_note "$PWD"; }
+            rosed() { _lab_reference_note "$(rospack find "${1:-}" 2>/dev/null)"; _lab_rosbash_rosed "$@"; }
+        fi
     fi
 fi
+
+# One line when $1 is inside one of the lab's reference packages (see roscd above).
+_lab_reference_note() {
+    local inside="${1#"$LAB_ROOT/catkin_ws/src/exercises/"}"
+    [ -n "${1:-}" ] && [ "$inside" != "$1" ] && [ -n "$inside" ] || return 0
+    echo "note: $1 is the lab's reference package ${inside%%/*} (a model answer), not yours: what you create or" \
+        "change here is the lab's. Your own goes in $_lab_student_src (catkin_create_pkg" \
+        "${inside%%/*} ...); once it exists, roscd and rosrun find yours first." >&2
+}
 
 if [ -z "$_lab_user_master$_lab_user_hostname$_lab_user_ip" ]; then
     export ROS_HOSTNAME=localhost

@@ -238,3 +238,33 @@ def test_a_terminal_opened_before_the_first_build_finds_the_students_package_at_
     assert output.split()[-3:] == [str(lab_package), str(student_package), str(student_package)], output
     assert (student_package / "src/new_server.py").exists()
     assert not (lab_package / "src/new_server.py").exists()
+
+
+def test_terminal_3_of_the_week4_page_before_the_first_build_writes_and_runs_the_students_file(tmp_path):
+    """The Week 4 page's TERMINAL 3, opened before the student's first `catkin build` (and before the student's
+    package existed, when roscd went to the lab's reference package and said so): `roscd week4_services/src`,
+    a new move_client.py there, `rosrun week4_services move_client.py`. The file lands in the student's package,
+    none in the lab's src folder, and rosrun runs it at once, with no "non-unique executable" menu between it and
+    the lab's relay of its own move_client.py."""
+    lab_src = REPO_ROOT / "catkin_ws/src/exercises/week4_services/src"
+    lab_before = sorted(lab_src.iterdir())
+    (tmp_path / ".bashrc").write_text("source {}\n".format(REPO_ROOT / "scripts" / "env.sh"))
+    env = student_env(tmp_path)
+    terminal_1 = Terminal(env, tmp_path, tmp_path / "terminal-1.log")
+    terminal_3 = Terminal(env, tmp_path, tmp_path / "terminal-3.log")
+    try:
+        output = terminal_3.run("roscd week4_services/src")   # no package of the student's yet: the lab's, said once
+        assert output.count("note: ") == 1 and f"note: {lab_src} is the lab's reference package week4_services" in \
+            output and "catkin_create_pkg week4_services" in output, output
+        assert terminal_3.run("roscd tb3_sim && cd") == ""   # the lab's simulators are not exercises: no note
+        output = terminal_1.run("cd ~/catkin_ws/src && catkin_create_pkg week4_services rospy geometry_msgs")
+        assert "Successfully created files" in output, output
+        output = terminal_3.run("roscd week4_services/src && touch move_client.py && chmod +x move_client.py && pwd")
+        assert output.strip() == str(tmp_path / "catkin_ws/src/week4_services/src"), output
+        terminal_3.run("printf '#!/usr/bin/env python3\\nprint(\"the student client\")\\n' > move_client.py")
+        output = terminal_3.run("rosrun week4_services move_client.py")
+        assert output.strip() == "the student client", output
+    finally:
+        terminal_1.close()
+        terminal_3.close()
+    assert sorted(lab_src.iterdir()) == lab_before

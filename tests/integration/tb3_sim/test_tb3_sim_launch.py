@@ -25,10 +25,14 @@ def model_names():
     return rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)().model_names
 
 
-def test_empty_world_launch_without_turtlebot3_model_set(launch):
-    launch("turtlebot3_gazebo", "turtlebot3_empty_world.launch", unset=("TURTLEBOT3_MODEL",))
+def test_empty_world_launch_without_turtlebot3_model_set_or_a_display(launch):
+    """Where the course's Gazebo window would open, one line says how to see the world here."""
+    process = launch("turtlebot3_gazebo", "turtlebot3_empty_world.launch",
+                     unset=("TURTLEBOT3_MODEL", "DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"))
     assert model_names() == ["ground_plane", "turtlebot3_waffle"]
     assert robot_position("turtlebot3_waffle") == pytest.approx((0.0, 0.0))
+    hint = "[tb3_sim] no display, so the simulator's window (Gazebo's gzclient in the course) is not started. See it"
+    assert process.output().count(hint) == 1 and "lab_web web.launch" in process.output()
 
 
 def test_world_launch_spawns_at_the_original_defaults_named_after_the_model(launch):

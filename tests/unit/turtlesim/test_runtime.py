@@ -1,14 +1,12 @@
-"""Runtime helpers of the nodes without ROS: headless tick timer, X display probe, raw terminal."""
+"""Runtime helpers of the nodes without ROS: headless tick timer, raw terminal."""
 import os
 import pty
-import socket
 import termios
 
 import pytest
 
 from turtlesim.core.ticker import run_ticks
 from turtlesim.tools.terminal import NotATerminalError, RawTerminal
-from turtlesim.view.display import X11_TCP_BASE_PORT, display_reachable, x_server_address
 
 
 class FakeClock:
@@ -59,31 +57,6 @@ def test_a_stop_request_during_the_wait_ends_the_loop():
     ticks = []
     run_ticks(lambda: ticks.append(1) or True, lambda seconds: True, 0.016)
     assert ticks == []
-
-
-@pytest.mark.parametrize('display, expected', [
-    (':0', [(socket.AF_UNIX, '\0/tmp/.X11-unix/X0'), (socket.AF_UNIX, '/tmp/.X11-unix/X0')]),
-    ('unix:12.0', [(socket.AF_UNIX, '\0/tmp/.X11-unix/X12'),
-                   (socket.AF_UNIX, '/tmp/.X11-unix/X12')]),
-    ('localhost:10.0', [(socket.AF_INET, ('localhost', X11_TCP_BASE_PORT + 10))]),
-    ('', []), ('nonsense', []), (None, []),
-])
-def test_x_server_addresses(display, expected):
-    assert x_server_address(display) == expected
-
-
-def test_a_display_nobody_listens_on_is_unreachable():
-    assert not display_reachable(':98765')
-    assert not display_reachable('garbage')
-
-
-def test_a_listening_x_socket_is_reachable(monkeypatch, tmp_path):
-    path = str(tmp_path / 'X7')
-    monkeypatch.setattr('turtlesim.view.display.X11_SOCKET', str(tmp_path / 'X%d'))
-    with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as server:
-        server.bind(path)
-        server.listen(1)
-        assert display_reachable(':7')
 
 
 @pytest.fixture

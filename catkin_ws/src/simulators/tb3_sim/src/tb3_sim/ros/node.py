@@ -69,7 +69,6 @@ so is the pacing of steps (`~real_time_factor`), which waits only after steps th
 ClockOutput.ticked).
 """
 
-import os
 import sys
 import threading
 import time
@@ -82,6 +81,7 @@ import rospy
 from geometry_msgs.msg import Twist
 from std_srvs.srv import Empty, EmptyResponse
 from tf2_msgs.msg import TFMessage
+from window_hint import can_open_window
 
 from master_reconnect import keep_registered
 from sim_clock import read_state, restore_state
@@ -332,8 +332,11 @@ def run_with_window(node, stop):
         physics.join(PAUSED_POLL_S)
 
 
-def has_display():
-    return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
+def window_possible(config):
+    """True when the window should open: not ~headless and a display to open it on. Without one (and not chosen
+    headless), one line says how to see the world here instead of the window the course's Gazebo would show."""
+    return not config.headless and can_open_window(
+        "tb3_sim", "roslaunch turtlebot3_gazebo <world>.launch", rospy.loginfo, rospy.logwarn)
 
 
 def worlds_dir():
@@ -416,7 +419,7 @@ def main():
                  if config.spawn_robot else "no robot (spawn one with spawn_model -urdf)")
         rospy.loginfo(f"tb3_sim: world '{world.description.name}', {robot}, real_time_factor "
                       f"{config.real_time_factor:g}{', paused' if config.paused else ''}")
-        if not config.headless and has_display():
+        if window_possible(config):
             run_with_window(node, stop)
         else:
             node.spin(stop)

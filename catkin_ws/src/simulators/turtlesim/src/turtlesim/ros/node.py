@@ -37,6 +37,7 @@ import time
 import rospkg
 import rospy
 from std_srvs.srv import Empty, EmptyResponse
+from window_hint import can_open_window
 
 from master_reconnect import keep_registered
 from roscpp_console.handler import use_roscpp_console
@@ -61,7 +62,6 @@ from turtlesim.srv import (
     TeleportAbsoluteResponse,
     TeleportRelativeResponse,
 )
-from turtlesim.view.display import display_reachable
 from turtlesim.view.scene_renderer import SceneRenderer
 from turtlesim.view.window import run_window
 
@@ -279,21 +279,13 @@ def read_flag(name):
 
 
 def window_wanted(headless):
-    """True when the window should open: not headless, and $DISPLAY names a reachable X server
-    (or Qt was told to use another platform through QT_QPA_PLATFORM)."""
+    """True when the window should open: not headless, and a display to open it on (or Qt was told to use another
+    platform through QT_QPA_PLATFORM). Without one, one line says how to see the canvas here."""
     if headless:
         return False
     if os.environ.get('QT_QPA_PLATFORM'):
         return True
-    display = os.environ.get('DISPLAY', '')
-    if not display:
-        rospy.logdebug('No DISPLAY: running headless')
-        return False
-    if not display_reachable(display):
-        rospy.logwarn('Cannot connect to the X display [%s]: running headless, without a '
-                      'window (pass _headless:=true to choose this)', display)
-        return False
-    return True
+    return can_open_window('turtlesim', 'rosrun turtlesim turtlesim_node', rospy.loginfo, rospy.logwarn)
 
 
 def main():

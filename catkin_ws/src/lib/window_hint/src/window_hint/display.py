@@ -1,8 +1,9 @@
-"""Is there an X display to open the window on? (no Qt, no ROS)
+"""Is there an X display to open a window on? (no Qt, no ROS)
 
-Qt aborts the whole process when it cannot connect to $DISPLAY, so turtlesim_node asks here
-first and runs headless, with a warning, when the X server does not answer.
+Qt aborts the whole process when it cannot connect to $DISPLAY, so a program asks here
+first and runs headless, with one line of guidance (window_hint.hints), when there is none.
 """
+import os
 import re
 import socket
 
@@ -17,6 +18,9 @@ DISPLAY_PATTERN = re.compile(r'^(?P<host>[^:]*):(?P<number>\d+)(\.\d+)?$')
 """[host]:display[.screen], the usual form of $DISPLAY."""
 
 CONNECT_TIMEOUT_S = 1.0
+
+NO_DISPLAY = 'no display'
+"""display_problem's answer when no display is set at all (the usual headless case, not a misconfiguration)."""
 
 
 def x_server_address(display):
@@ -44,6 +48,19 @@ def display_reachable(display, timeout_s=CONNECT_TIMEOUT_S):
         except OSError:
             continue
     return False
+
+
+def display_problem(environ=os.environ):
+    """None when a window can open (a Wayland session, or an X server answering at $DISPLAY); otherwise why not,
+    in a few words for the hint line."""
+    if environ.get('WAYLAND_DISPLAY'):
+        return None
+    display = environ.get('DISPLAY', '')
+    if not display:
+        return NO_DISPLAY
+    if not display_reachable(display):
+        return 'no display (the X server at DISPLAY=%s does not answer)' % display
+    return None
 
 
 def _connect(family, address, timeout_s):
