@@ -26,14 +26,13 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from integration.navigation import world_map  # noqa: E402
+from integration.navigation.stack import start_navigation, turtlebot3_world_cells  # noqa: E402
 
-from roslab import RosMaster, nav_goals, wait_for_param, wait_for_service, wait_for_topic  # noqa: E402
+from roslab import RosMaster, nav_goals  # noqa: E402
 from roslab.graph import node_pid  # noqa: E402
 from roslab.processes import cpu_seconds  # noqa: E402
 
-NAVIGATION_LAUNCH = Path(__file__).resolve().parents[1] / "integration" / "navigation" / "navigation.launch"
 FACTOR = 10
-SPAWN = (-2.0, -0.5)
 GOALS, SEED = 40, 30
 MAX_VEL_M_S = 0.26
 AMCL_OFFSET = (0.3, math.radians(15.0))
@@ -41,21 +40,6 @@ DRIVE_M_S, DRIVE_SIM_S = 0.2, 10.0
 TOPICS = (("/move_base/result", "move_base_msgs/MoveBaseActionResult"), ("/odom", "nav_msgs/Odometry"),
           ("/scan", "sensor_msgs/LaserScan"), ("/move_base/feedback", "move_base_msgs/MoveBaseActionFeedback"),
           ("/amcl_pose", "geometry_msgs/PoseWithCovarianceStamped"))
-
-
-def start_navigation(master, cells, factor):
-    map_file = world_map.write_map(master.workdir, "map", cells)
-    master.roslaunch("turtlebot3_gazebo", "turtlebot3_world.launch", "gui:=false", "model:=waffle",
-                     f"real_time_factor:={factor}")
-    wait_for_service(master.uri, "/gazebo/get_model_state", 60)
-    wait_for_param(master.uri, "/use_sim_time")
-    master.start(["roslaunch", "--wait", str(NAVIGATION_LAUNCH), f"map_file:={map_file}",
-                  f"initial_pose_x:={SPAWN[0]}", f"initial_pose_y:={SPAWN[1]}"], "navigation")
-    wait_for_topic(master.uri, "/move_base/status", 120)
-    probe = master.probe()
-    for topic, kind in TOPICS:
-        probe.subscribe(topic, kind)
-    return probe
 
 
 def random_goal_runs(master, probe, cells, count):
@@ -85,11 +69,11 @@ def _median(values):
 
 
 def run(goals=GOALS, factor=FACTOR):
-    cells = world_map.world_cells("turtlebot3_world", SPAWN)
+    cells = turtlebot3_world_cells()
     master = RosMaster(Path(tempfile.mkdtemp(prefix="nav_bench_")))
     os.environ["ROS_MASTER_URI"] = master.uri   # this process calls /gazebo/get_model_state itself
     try:
-        probe = start_navigation(master, cells, factor)
+        probe = start_navigation(master, master.workdir, cells, factor, TOPICS)
         amcl_m, amcl_rad = nav_goals.amcl_error_after_drive(probe, *AMCL_OFFSET, DRIVE_M_S, DRIVE_SIM_S)
         goal_list, runs, cpu = random_goal_runs(master, probe, cells, goals)
     finally:

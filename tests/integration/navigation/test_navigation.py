@@ -3,41 +3,22 @@ interfaces: the move_base action's goal/result topics, /move_base/cancel, /scan,
 
 One master, simulator and navigation stack for the module; the simulator runs at REAL_TIME_FACTOR and every
 wait is in sim time. """
-from pathlib import Path
-
 import pytest
 
-from roslab import wait_for_service, wait_for_topic
 from roslab.nav_goals import send_goal, wait_result
 
-from . import world_map
+from .stack import start_navigation, turtlebot3_world_cells
 
-HERE = Path(__file__).resolve().parent
 REAL_TIME_FACTOR = 10
-SPAWN = (-2.0, -0.5)
 PREEMPTED, SUCCEEDED, ABORTED = 2, 3, 4
 
 
 @pytest.fixture(scope="module")
-def cells():
-    return world_map.world_cells("turtlebot3_world", SPAWN)
-
-
-@pytest.fixture(scope="module")
-def nav(ros_master, cells, tmp_path_factory):
-    map_file = world_map.write_map(tmp_path_factory.mktemp("map"), "map", cells)
-    ros_master.roslaunch("turtlebot3_gazebo", "turtlebot3_world.launch", "gui:=false", "model:=waffle",
-                         f"real_time_factor:={REAL_TIME_FACTOR}")
-    wait_for_service(ros_master.uri, "/gazebo/get_model_state", 60)
-    probe = ros_master.probe()   # started after the launch set /use_sim_time: its now() and sleep_sim are sim time
-    ros_master.start(["roslaunch", "--wait", str(HERE / "navigation.launch"), f"map_file:={map_file}",
-                      f"initial_pose_x:={SPAWN[0]}", f"initial_pose_y:={SPAWN[1]}"], "navigation")
-    wait_for_topic(ros_master.uri, "/move_base/status", 120)
-    for topic, kind in (("/move_base/result", "move_base_msgs/MoveBaseActionResult"),
-                        ("/odom", "nav_msgs/Odometry"),
-                        ("/amcl_pose", "geometry_msgs/PoseWithCovarianceStamped")):
-        probe.subscribe(topic, kind)
-    return probe
+def nav(ros_master, tmp_path_factory):
+    return start_navigation(ros_master, tmp_path_factory.mktemp("map"), turtlebot3_world_cells(), REAL_TIME_FACTOR,
+                            (("/move_base/result", "move_base_msgs/MoveBaseActionResult"),
+                             ("/odom", "nav_msgs/Odometry"),
+                             ("/amcl_pose", "geometry_msgs/PoseWithCovarianceStamped")))
 
 
 # ---- tests, in the order the robot lives through them
