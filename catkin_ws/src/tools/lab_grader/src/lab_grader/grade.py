@@ -155,8 +155,8 @@ class SubmissionGrader:
         env = box.student_env(self.env)
         box.run_student(["find", "src", "-name", "*.py", "-exec", "chmod", "+x", "{}", "+"], env,
                         out_dir / "chmod.log", timeout_s=30)
-        # roscore and the simulator start while the package builds (they do not need it): on 2 cores the two
-        # start-ups overlap, which took 10 s off a Week 4 submission at both factors
+        # roscore and the simulator start while the package builds (they do not need it): the two start-ups overlap
+        # instead of adding up. A build that fails has cost a simulator start-up for nothing.
         on_stage("building (and starting {})".format(self._ros_what()))
         truth_socket = box.trusted_dir / GROUND_TRUTH_SOCKET
         ready_service, startup_log = self._start_ros(box, out_dir, truth_socket)
@@ -173,6 +173,13 @@ class SubmissionGrader:
         if not ready.ok:
             result["problems"].append("{} did not start: {}".format(self._ros_what(), log_tail(startup_log, 500)))
             return
+        result.update(combine(self.suite, self._grade_exercises(box, submission, env, out_dir, result, on_stage,
+                                                                truth_socket)))
+
+    def _grade_exercises(self, box, submission, env, out_dir, result, on_stage, truth_socket):
+        """Grade the exercises one after the other, each with its node alone, through one check runner; the nodes'
+        records go into result["nodes"] and the problems into result["problems"]. Returns {exercise's file: its
+        results}."""
         parts = {}
         exercises = self.suite.exercises()
         runner = None
@@ -215,7 +222,7 @@ class SubmissionGrader:
             if runner is not None:
                 runner.close_input()
                 runner.wait(RUNNER_EXIT_S)
-        result.update(combine(self.suite, parts))
+        return parts
 
     def _ros_what(self):
         return "roscore" if self.suite.world is None else "the simulator"
