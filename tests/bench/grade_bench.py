@@ -27,7 +27,7 @@ CLASS_SIZE = 20
 FAST_FACTOR = 2
 ONE_TARGET_S = {1: 60.0, 2: 35.0}
 CLASS_TARGET_S = 600.0
-STAGES = ("building", "starting the simulator", "finding its node", "checks")
+STAGES = ("building (and starting the simulator)", "starting the simulator", "finding its node", "checks")
 
 
 def grade(folder, out, factor, jobs):

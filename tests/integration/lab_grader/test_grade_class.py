@@ -1,8 +1,17 @@
 """`rosrun lab_grader grade` on a small class of sample submissions (tests/integration/lab_grader/
-sample_submissions.py: the lab's reference, copies with one typical mistake each, and a package written from scratch
-in a student's own style), graded in parallel in their sandboxes in one run: each gets the verdicts its mistake
-deserves, with evidence; every report renders in a real headless Chromium with its trajectory picture; and two
-shards merged give the files of one run. (test_grade_hostile.py grades submissions that attack the sandbox.)"""
+sample_submissions.py: the lab's reference, copies with one typical mistake each, a package written from scratch
+in a student's own style, and the calibration set's package in the course template's habits), graded in parallel in
+their sandboxes in one run: each gets the verdicts its mistake deserves, with evidence; every report renders in a
+real headless Chromium with its trajectory picture; and two shards merged give the files of one run.
+(test_grade_hostile.py grades submissions that attack the sandbox.)
+
+Calibration: the grader agrees with a marker who follows the Week 4 page. The lab's reference solution, and a
+package written in the course template's habits (student_style/week4_course_template) - whole-second timing
+(`rospy.get_rostime().secs`), publishers at module level, bare return values (a tuple for SetBool, a bool, a
+string), the older message packages (tuos_ros_msgs, com2009_msgs), its own file names (timed_server.py,
+approach_object_server.py) and Parts 1 and 2 both on /move_service. A marker gives both full marks; the grader's
+verdicts, check by check, are stated in the tests at the end (they share the class's grade run: a run of their own
+graded the reference a second time)."""
 import csv
 import json
 import os
@@ -15,11 +24,17 @@ from roslab.browser import HeadlessBrowser
 from .sample_submissions import make_submission
 
 GRADE_TIMEOUT_S = 900
-CLASS = ("reference", "wrong_direction", "old_message_package", "does_not_build", "student_style", "wrong_duration",
-         "never_stops", "ignores_invalid_input", "bare_values", "own_service_names", "python2_syntax")
+# The older message packages (com2009_msgs, tuos_ros_msgs) are the course template's: its calibration test covers them.
+CLASS = ("reference", "wrong_direction", "does_not_build", "student_style", "wrong_duration", "never_stops",
+         "ignores_invalid_input", "bare_values", "own_service_names", "python2_syntax", "course_template")
 REAL_TIME_FACTOR = "2"   # the class and its rerun: a rerun compares like with like only at the same factor
 TIMED_MOVES = {"timed_fwd": 2, "timed_back": 2, "timed_left": 3, "timed_right": 3}   # check: seconds requested
 INVALID_TIMED_MOVES = ("timed_invalid_word", "timed_zero_duration", "timed_negative_duration")
+REQUIRED = ("move_true", "move_false", "timed_fwd", "timed_back", "timed_left", "timed_right", "timed_invalid_word",
+            "timed_zero_duration", "timed_negative_duration", "approach_stops_at_distance")
+ADVICE = ("approach_velocity_too_fast", "approach_velocity_zero", "approach_velocity_negative",
+          "approach_velocity_nan", "approach_distance_too_close", "approach_distance_out_of_range",
+          "approach_distance_nan")
 
 
 def grade(env, *args):
@@ -64,10 +79,10 @@ def graded(env, tmp_path_factory):
 
 
 @pytest.mark.slow
-def test_the_reference_the_old_message_package_and_a_students_own_style_score_full_marks(graded):
+def test_the_reference_and_a_students_own_style_score_full_marks(graded):
     out, output = graded
     graded_results = results(out)
-    for name in ("reference", "old_message_package", "student_style"):
+    for name in ("reference", "student_style"):
         result = graded_results[name]
         assert result["score"] == result["max_score"] > 0, json.dumps(result, indent=1)[:3000]
         assert set(verdicts(result).values()) == {"pass"}
@@ -201,12 +216,24 @@ def test_the_reports_render_in_a_headless_browser_with_the_trajectory(graded):
 
 @pytest.mark.slow
 def test_two_shards_merged_equal_one_run(env, tmp_path):
+    """The whole run and the two shards run at once, as a job array's pieces may on one machine (each grader
+    reserves its own slots); the suite without a world starts only roscore beside each build."""
     folder = tmp_path / "class"
     for student in ("ann", "ben", "cat"):
         make_submission("does_not_build", folder).rename(folder / student)
-    grade(env, folder, "--suite", "week4", "--out", tmp_path / "whole")
-    grade(env, folder, "--suite", "week4", "--out", tmp_path / "s1", "--shard", "1/2")
-    grade(env, folder, "--suite", "week4", "--out", tmp_path / "s2", "--shard", "2/2")
+    runs = [subprocess.Popen(["rosrun", "lab_grader", "grade", str(folder), "--suite", "beginner_tutorials", "--out",
+                              str(tmp_path / out), *shard], env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                             text=True)
+            for out, shard in (("whole", ()), ("s1", ("--shard", "1/2")), ("s2", ("--shard", "2/2")))]
+    try:
+        for run in runs:
+            output = run.communicate(timeout=GRADE_TIMEOUT_S)[0]
+            assert run.returncode == 0, output[-3000:]
+    finally:
+        for run in runs:
+            if run.poll() is None:
+                run.kill()
+                run.wait()
     grade(env, "--merge", tmp_path / "s1", tmp_path / "s2", "--out", tmp_path / "merged")
     assert sorted(p.name for p in (tmp_path / "s1").iterdir() if p.is_dir()) == ["ann", "cat"]
     for name in ("class.csv", "summary.json"):
@@ -225,3 +252,55 @@ def test_a_rerun_gives_identical_scores_and_verdicts(env, graded, tmp_path):
     first, second = results(graded[0]), results(tmp_path / "again")
     for name in again:
         assert (second[name]["score"], verdicts(second[name])) == (first[name]["score"], verdicts(first[name]))
+
+
+# ---- calibration ----------------------------------------------------------------------------------------------------
+
+def by_id(result):
+    return {check["id"]: check for check in result["checks"]}
+
+
+@pytest.mark.slow
+def test_the_reference_passes_every_check_required_and_advice(graded):
+    result = results(graded[0])["reference"]
+    assert set(verdicts(result).values()) == {"pass"}, json.dumps(result["checks"], indent=1)[:3000]
+    assert result["score"] == result["max_score"] == 100
+    assert {check["id"]: check["kind"] for check in result["checks"]} == dict(
+        [(check_id, "required") for check_id in REQUIRED] + [(check_id, "advice") for check_id in ADVICE])
+
+
+@pytest.mark.slow
+def test_the_course_templates_habits_get_full_marks(graded):
+    result = results(graded[0])["course_template"]
+    checks = by_id(result)
+    # Every required check passes: whole-second timing (a 5 s move lasting 4..5 s, a 2 s one 1..2 s) is in the
+    # tolerance; the tuple, the bool and the string rospy turns into responses; the old message packages' types
+    # have the same md5sums.
+    assert {check_id: checks[check_id]["verdict"] for check_id in REQUIRED} == dict.fromkeys(REQUIRED, "pass"), \
+        json.dumps([checks[check_id] for check_id in REQUIRED], indent=1)[:3000]
+    assert result["score"] == result["max_score"] == 100
+    move = checks["move_true"]["evidence"]["motion"]
+    assert 3.9 < move["duration_s"] <= 5.5 and 0.35 <= move["forward_m"] <= 0.6, move
+    # The speed above the Waffle's maximum is taken (the template does not check it): an advice failure, 0 points.
+    assert checks["approach_velocity_too_fast"]["verdict"] == "fail"
+    assert "expected to stay within 0.01 m" in checks["approach_velocity_too_fast"]["reason"]
+    assert {check_id: checks[check_id]["verdict"] for check_id in ADVICE if check_id != "approach_velocity_too_fast"} \
+        == dict.fromkeys(set(ADVICE) - {"approach_velocity_too_fast"}, "pass")
+
+
+@pytest.mark.slow
+def test_other_file_names_and_one_service_name_for_two_parts_are_found_as_a_marker_would(graded):
+    result = results(graded[0])["course_template"]
+    nodes = {node["exercise"]: node for node in result["nodes"]}
+    assert nodes["move_server.py"]["found_by"] == "the course's file name"
+    assert nodes["timed_move_server.py"]["file"] == "week4_course_template/src/timed_server.py"
+    assert nodes["approach_server.py"]["file"] == "week4_course_template/src/approach_object_server.py"
+    assert {nodes[name]["found_by"] for name in ("timed_move_server.py", "approach_server.py")} == {
+        "found by trying each script"}
+    services = result["services"]
+    assert services["/move_service"]["found_type"] == "tuos_ros_msgs/SetBool"
+    # Part 2 serves on /move_service too: alone (as the page shows it), it is found there by type
+    assert services["/timed_move_service"]["found"] == "/move_service"
+    assert services["/timed_move_service"]["found_by"] == "by type"
+    assert services["/timed_move_service"]["found_type"] == "com2009_msgs/TimedMovement"
+    assert services["/approach_service"]["found_type"] == "com2009_msgs/Approach"

@@ -214,6 +214,19 @@ def test_the_whole_workspace_is_capped_not_only_each_file(work_root, env, tmp_pa
     assert not box_dir.exists()
 
 
+def test_a_trusted_process_reads_the_lines_the_grader_sends_until_the_pipe_ends(box, env, tmp_path):
+    """The check runner's command pipe: each line arrives as sent, the end of the pipe ends the reader, and a line
+    sent to a process that has exited is refused instead of raising."""
+    reader = box.start_trusted([PYTHON, "-c", "import sys\nfor line in sys.stdin:\n    print('got', line.strip(), "
+                                "flush=True)"], env, tmp_path / "reader.log", commands=True)
+    assert reader.send_line('{"exercise": "move_server.py"}') and reader.send_line("second")
+    reader.close_input()
+    result = reader.wait(10)
+    assert result.ok, (tmp_path / "reader.log").read_text()
+    assert (tmp_path / "reader.log").read_text().splitlines() == ['got {"exercise": "move_server.py"}', "got second"]
+    assert reader.send_line("too late") is False
+
+
 def test_a_short_output_is_kept_whole(box, env, tmp_path):
     result = box.run_student(["sh", "-c", "echo out; echo err >&2; exit 3"], env, tmp_path / "short.log")
     assert result.returncode == 3 and result.stop_reason is None and not result.truncated

@@ -30,7 +30,7 @@ from lab_grader.checks.verdicts import (
     score,
     write_results,
 )
-from lab_grader.suite_file import load_suite
+from lab_grader.suite_file import SuiteError, load_suite
 
 from .test_motion import drive
 from .test_suite_file import SUITES_DIR
@@ -302,6 +302,57 @@ def test_check_timeout_overrides_every_check():
     document = runner.run_suite(SUITE, Recording, check_timeout_s=4.0, log=lambda line: None)
     assert seen and set(seen) == {4.0}
     assert document["checks"][0]["evidence"]["timeout_s"] == 4.0
+
+
+def serve_command(tmp_path, exercise, number):
+    return json.dumps({"exercise": exercise, "out": str(tmp_path / "checks-{}.json".format(number)),
+                       "log": str(tmp_path / "checks-{}.log".format(number))})
+
+
+def test_serve_grades_exercise_after_exercise_with_one_context(tmp_path):
+    """The grader's one runner per submission: one context, made before the first command, each exercise's checks
+    only, each in its own results file and log."""
+    made = []
+
+    def make():
+        made.append(FakeContext())
+        return made[-1]
+
+    commands = [serve_command(tmp_path, "move_server.py", 1), serve_command(tmp_path, "approach_server.py", 2)]
+    runner.serve(SUITE, make, iter(commands), log=lambda line: None)
+    assert len(made) == 1 and made[0].stopped == 2
+    first = json.loads((tmp_path / "checks-1.json").read_text())
+    assert [check["id"] for check in first["checks"]] == ["move_true", "move_false"] and first["score"] == 22
+    assert set(first["services"]) == {"/move_service"}
+    second = json.loads((tmp_path / "checks-2.json").read_text())
+    assert len(second["checks"]) == 8 and {check["verdict"] for check in second["checks"]} == {ERROR}
+    assert (tmp_path / "checks-1.log").read_text().splitlines()[1].startswith("[1/2] pass")
+    assert (tmp_path / "checks-2.log").read_text().splitlines()[-1].startswith("score 0/34 ->")
+
+
+def test_serve_stops_after_an_interrupted_exercise_and_errors_a_context_that_cannot_start(tmp_path):
+    commands = [serve_command(tmp_path, "move_server.py", 1), serve_command(tmp_path, "timed_move_server.py", 2)]
+    runner.serve(SUITE, lambda: FakeContext(interrupt_at=2), iter(commands), log=lambda line: None)
+    assert json.loads((tmp_path / "checks-1.json").read_text())["complete"] is False
+    assert not (tmp_path / "checks-2.json").exists()
+
+    def broken():
+        raise CheckError("no ground-truth sample after 30 s")
+    said = []
+    runner.serve(SUITE, broken, iter(commands[1:]), log=said.append)
+    assert said == ["setup failed: CheckError: no ground-truth sample after 30 s"]
+    document = json.loads((tmp_path / "checks-2.json").read_text())
+    assert document["checks"][0]["reason"] == "not run: CheckError: no ground-truth sample after 30 s"
+
+
+@pytest.mark.parametrize("line, named", [
+    ("move_server.py", "not a command"),
+    ('{"exercise": "move_server.py"}', "KeyError: 'out'"),
+    ('{"exercise": "mover.py", "out": "r.json", "log": "r.log"}', "no exercise is served by a file named mover.py"),
+])
+def test_serve_ends_at_a_bad_command_naming_it(line, named):
+    with pytest.raises(SuiteError, match=named):
+        runner.serve(SUITE, FakeContext, iter([line]), log=lambda text: None)
 
 
 def test_main_writes_nothing_for_a_bad_suite(tmp_path, capsys):

@@ -20,6 +20,8 @@ import rosservice
 
 POLL_S = 0.2
 CALLER_ID = "/lab_grader_find_server"
+GRADER_NODE_PREFIX = "/lab_grader_"   # the grader's own nodes (its check runner, /lab_grader_checks_<pid>_...):
+                                      # one coming up is not the tried script's
 
 
 def service_md5(type_name):
@@ -54,8 +56,9 @@ def offered_actions(master):
 
 
 def running_nodes(master):
-    """The nodes on the master that rospy has initialised (each offers <node>/get_loggers)."""
-    return {name[:-len("/get_loggers")] for name, _ in master.getSystemState()[2] if name.endswith("/get_loggers")}
+    """The nodes on the master that rospy has initialised (each offers <node>/get_loggers), but the grader's."""
+    return {name[:-len("/get_loggers")] for name, _ in master.getSystemState()[2]
+            if name.endswith("/get_loggers") and not name.startswith(GRADER_NODE_PREFIX)}
 
 
 def find(specs, master, headers):

@@ -6,9 +6,11 @@ tb3_sim (trusted, in the box's own loopback-only network, serving its ground tru
 root-only folder, which the student's processes cannot see: lab_grader.checks.ground_truth), start the student's
 nodes the way the course says (`rosrun <package> <file>`), then run the suite's checks (what `rosrun lab_grader
 run_checks` runs, as `python3 -m lab_grader.checks.runner`: trusted, so rosrun's package search, four catkin_find
-runs, is not needed) and read their JSON. A build that fails, a node that is missing or dies, a check runner that
-overruns: each is recorded with its evidence (the tail of the log) and the submission gets the checks' verdicts as
-far as they got; the batch goes on.
+runs, is not needed) and read their JSON. One check runner serves every exercise of a submission (`run_checks
+--serve`: an exercise per line on its stdin), started while the first exercise's node starts; only a runner stopped
+because the student's node died, or one that overran, is replaced for the next exercise. A build that fails, a
+node that is missing or dies, a check runner that overruns: each is recorded with its evidence (the tail of the
+log) and the submission gets the checks' verdicts as far as they got; the batch goes on.
 
 Logs are written by the grader outside the student's workspace, under the submission's output folder.
 """
@@ -29,7 +31,8 @@ BUILD_TIMEOUT_S = 300.0
 SIMULATOR_START_S = 60.0
 SIMULATOR_READY_SERVICE = "/gazebo/reset_world"
 MASTER_READY_SERVICE = "/rosout/get_loggers"    # roscore's rosout node is up: the master answers
-CHECKS_TIMEOUT_S = 600.0
+CHECKS_TIMEOUT_S = 600.0      # one exercise's checks
+RUNNER_EXIT_S = 10.0          # the check runner ends this soon after the end of its input (it leaves the graph)
 TRY_SCRIPT_S = 60.0            # a script tried for an exercise must offer its service (or action) within this ...
 NODE_UP_GRACE_S = 5.0          # ... or within this once it has called init_node
 POLL_S = 0.2                   # how often the grader looks at a node, the check runner and find_server
@@ -152,7 +155,11 @@ class SubmissionGrader:
         env = box.student_env(self.env)
         box.run_student(["find", "src", "-name", "*.py", "-exec", "chmod", "+x", "{}", "+"], env,
                         out_dir / "chmod.log", timeout_s=30)
-        on_stage("building")
+        # roscore and the simulator start while the package builds (they do not need it): the two start-ups overlap
+        # instead of adding up. A build that fails has cost a simulator start-up for nothing.
+        on_stage("building (and starting {})".format(self._ros_what()))
+        truth_socket = box.trusted_dir / GROUND_TRUTH_SOCKET
+        ready_service, startup_log = self._start_ros(box, out_dir, truth_socket)
         build = box.run_student(["catkin_make"], env, out_dir / "build.log", timeout_s=BUILD_TIMEOUT_S)
         result["build"] = {"ok": build.ok, "stopped": build.stop_reason, "log_tail": None if build.ok
                            else log_tail(out_dir / "build.log"),
@@ -160,51 +167,77 @@ class SubmissionGrader:
         if not build.ok:
             result["problems"].append("the package does not build (catkin_make)")
             return
-        on_stage("starting roscore" if self.suite.world is None else "starting the simulator")
-        truth_socket = box.trusted_dir / GROUND_TRUTH_SOCKET
-        box.start_trusted(["roscore", "-p", str(ROS_PORT)], self.env, out_dir / "roscore.log")
-        if self.suite.world is None:
-            ready_service, startup_log, what = MASTER_READY_SERVICE, out_dir / "roscore.log", "roscore"
-        else:
-            box.start_trusted(["roslaunch", "--wait", "tb3_sim", "tb3_sim.launch", "gui:=false",
-                               "world:=" + self.suite.world, "real_time_factor:={:g}".format(self.real_time_factor),
-                               "ground_truth_socket:={}".format(truth_socket)],
-                              self.env, out_dir / "simulator.log")
-            ready_service, startup_log, what = SIMULATOR_READY_SERVICE, out_dir / "simulator.log", "the simulator"
+        on_stage("starting {}".format(self._ros_what()))
         ready = box.run_trusted(["python3", "-m", "lab_grader.wait_service", ready_service, str(SIMULATOR_START_S)],
                                 self.env, out_dir / "startup_wait.log", timeout_s=SIMULATOR_START_S + 10)
         if not ready.ok:
-            result["problems"].append("{} did not start: {}".format(what, log_tail(startup_log, 500)))
+            result["problems"].append("{} did not start: {}".format(self._ros_what(), log_tail(startup_log, 500)))
             return
+        result.update(combine(self.suite, self._grade_exercises(box, submission, env, out_dir, result, on_stage,
+                                                                truth_socket)))
+
+    def _grade_exercises(self, box, submission, env, out_dir, result, on_stage, truth_socket):
+        """Grade the exercises one after the other, each with its node alone, through one check runner; the nodes'
+        records go into result["nodes"] and the problems into result["problems"]. Returns {exercise's file: its
+        results}."""
         parts = {}
         exercises = self.suite.exercises()
-        for number, exercise in enumerate(exercises, start=1):
-            on_stage("exercise {}/{} ({}): finding its node".format(number, len(exercises), exercise.node))
-            node, server = self._start_server(box, submission, exercise, env, out_dir, number,
-                                              served=[node["file"] for node in result["nodes"] if node["file"]])
-            if server is None:
-                parts[exercise.node] = not_run(self.suite, exercise, node)
+        runner = None
+        try:
+            for number, exercise in enumerate(exercises, start=1):
+                if runner is None:
+                    runner_log = out_dir / "checks-runner-{}.log".format(number)
+                    runner = box.start_trusted(
+                        ["python3", "-m", "lab_grader.checks.runner", "--suite", str(self.suite.path), "--serve",
+                         "--ground-truth", str(truth_socket)], self.env, runner_log, commands=True)
+                on_stage("exercise {}/{} ({}): finding its node".format(number, len(exercises), exercise.node))
+                node, server = self._start_server(box, submission, exercise, env, out_dir, number,
+                                                  served=[node["file"] for node in result["nodes"] if node["file"]])
                 result["nodes"].append(node)
-                continue
-            checks_log = out_dir / "checks-{}.log".format(number)
-            on_stage("exercise {}/{} ({}): checks".format(number, len(exercises), exercise.node), checks_log)
-            checks_file = out_dir / "checks-{}.json".format(number)
-            runner = box.start_trusted(["python3", "-m", "lab_grader.checks.runner", "--suite", str(self.suite.path),
-                                        "--exercise", exercise.node, "--out", str(checks_file),
-                                        "--ground-truth", str(truth_socket)], self.env, checks_log)
-            run = watch_checks(runner, server)
-            crashed = not server.running()
-            node.update(running_at_end=not crashed, **(crash_report(server.log_path) if crashed else {}))
-            server.stop()
-            result["nodes"].append(node)
-            checks = read_json(checks_file)
-            if checks is None:
-                result["problems"].append("the checks of {} did not finish ({}): {}".format(
-                    exercise.node, run.stop_reason or "exit {}".format(run.returncode), log_tail(checks_log, 500)))
-                parts[exercise.node] = not_run(self.suite, exercise, node, "the checks did not finish")
-                continue
-            parts[exercise.node] = checks_as_crashed(checks, node) if crashed else checks
-        result.update(combine(self.suite, parts))
+                if server is None:
+                    parts[exercise.node] = not_run(self.suite, exercise, node)
+                    continue
+                checks_log = out_dir / "checks-{}.log".format(number)
+                checks_log.write_text("")       # the runner appends this exercise's lines
+                on_stage("exercise {}/{} ({}): checks".format(number, len(exercises), exercise.node), checks_log)
+                checks_file = out_dir / "checks-{}.json".format(number)
+                checks_file.unlink(missing_ok=True)   # an earlier grading's, in the same output folder
+                ended = watch_checks(runner, server, json.dumps(
+                    {"exercise": exercise.node, "out": str(checks_file), "log": str(checks_log)}), checks_file)
+                crashed = not server.running()
+                node.update(running_at_end=not crashed, **(crash_report(server.log_path) if crashed else {}))
+                server.stop()
+                checks = read_json(checks_file)
+                if ended is not None:
+                    runner = None     # it ended or was stopped: the next exercise starts another
+                if checks is None:
+                    why = ("its results file is unreadable" if ended is None
+                           else ended.stop_reason or "exit {}".format(ended.returncode))
+                    result["problems"].append("the checks of {} did not finish ({}): {}".format(
+                        exercise.node, why, log_tail(checks_log, 500) or log_tail(runner_log, 500)))
+                    parts[exercise.node] = not_run(self.suite, exercise, node, "the checks did not finish")
+                    continue
+                parts[exercise.node] = checks_as_crashed(checks, node) if crashed else checks
+        finally:
+            if runner is not None:
+                runner.close_input()
+                runner.wait(RUNNER_EXIT_S)
+        return parts
+
+    def _ros_what(self):
+        return "roscore" if self.suite.world is None else "the simulator"
+
+    def _start_ros(self, box, out_dir, truth_socket):
+        """Start roscore and, when the suite has a world, tb3_sim serving its ground truth on `truth_socket`.
+        Returns (the service that says they are up, the log that says why not)."""
+        box.start_trusted(["roscore", "-p", str(ROS_PORT)], self.env, out_dir / "roscore.log")
+        if self.suite.world is None:
+            return MASTER_READY_SERVICE, out_dir / "roscore.log"
+        box.start_trusted(["roslaunch", "--wait", "tb3_sim", "tb3_sim.launch", "gui:=false",
+                           "world:=" + self.suite.world, "real_time_factor:={:g}".format(self.real_time_factor),
+                           "ground_truth_socket:={}".format(truth_socket)],
+                          self.env, out_dir / "simulator.log")
+        return SIMULATOR_READY_SERVICE, out_dir / "simulator.log"
 
     def _start_server(self, box, submission, exercise, env, out_dir, number, served=()):
         """Start the node that serves `exercise`, alone: the course's file when the submission has one (the check
@@ -254,16 +287,23 @@ class SubmissionGrader:
         return node, None
 
 
-def watch_checks(runner, server):
-    """Wait for the check runner `runner` (a SandboxProcess) to end, at most CHECKS_TIMEOUT_S; if the student's
-    node `server` exits meanwhile, stop the runner at once (SIGINT: it writes the results it has, the rest "not
-    run"). Returns the runner's RunResult."""
+def watch_checks(runner, server, command, checks_file):
+    """Give the serving check runner `runner` (a SandboxProcess) its next exercise, `command`, and wait until it has
+    written `checks_file`, at most CHECKS_TIMEOUT_S. If the student's node `server` exits meanwhile, stop the runner
+    at once (SIGINT: it writes the results it has, the rest "not run"); past the deadline, kill it. Returns None
+    while the runner serves on, else its RunResult (it ended, or was stopped)."""
     deadline = time.monotonic() + CHECKS_TIMEOUT_S
-    while runner.running() and time.monotonic() < deadline:
+    if not runner.send_line(command):
+        return runner.wait(RUNNER_EXIT_S)
+    while not checks_file.exists():
+        if not runner.running():
+            return runner.wait(0)
         if not server.running():
             return runner.stop()
+        if time.monotonic() > deadline:
+            return runner.wait(0)
         time.sleep(POLL_S)
-    return runner.wait(0)
+    return None
 
 
 def crash_report(log_path):

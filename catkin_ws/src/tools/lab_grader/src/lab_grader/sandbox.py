@@ -246,15 +246,17 @@ class SubmissionSandbox:
         return dict(env, ROS_HOME=str(ros_home), ROS_LOG_DIR=str(ros_home / "log"))
 
     def start_trusted(self, argv: Sequence[str], env: Dict[str, str], log_path: Path,
-                      cwd: Optional[Path] = None) -> SandboxProcess:
+                      cwd: Optional[Path] = None, commands: bool = False) -> SandboxProcess:
         """Start a grader's command as root inside the box's network namespace, with `env` made `trusted_env`;
-        stopped by close() at the latest."""
+        stopped by close() at the latest. With `commands`, its stdin is a pipe the grader writes lines to
+        (SandboxProcess.send_line), else /dev/null."""
         self._check_log_path(log_path)
         env = self.trusted_env(env)
         full_argv = (self._netns.enter_argv() + [self._tools["setpriv"], "--pdeathsig", "KILL", "--"] + list(argv))
         with open(log_path, "wb") as log:
-            popen = subprocess.Popen(full_argv, env=env, cwd=cwd, stdin=subprocess.DEVNULL, stdout=log,
-                                     stderr=subprocess.STDOUT, start_new_session=True)
+            popen = subprocess.Popen(full_argv, env=env, cwd=cwd, stdin=subprocess.PIPE if commands
+                                     else subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
+                                     start_new_session=True, text=commands)
         return self._track(SandboxProcess(popen, log_path, sandboxed=False))
 
     def run_trusted(self, argv: Sequence[str], env: Dict[str, str], log_path: Path,

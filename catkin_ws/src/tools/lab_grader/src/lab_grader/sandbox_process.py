@@ -125,6 +125,24 @@ class SandboxProcess:
     def running(self) -> bool:
         return self._popen.poll() is None
 
+    def send_line(self, line: str) -> bool:
+        """Write one line to the process's command pipe (a trusted process started with `commands`); False when
+        it has closed its end (it exited)."""
+        try:
+            self._popen.stdin.write(line + "\n")
+            self._popen.stdin.flush()
+        except (BrokenPipeError, ValueError):   # ValueError: the pipe was closed on our side
+            return False
+        return True
+
+    def close_input(self) -> None:
+        """End the command pipe: the process reads end of file."""
+        if self._popen.stdin is not None:
+            try:
+                self._popen.stdin.close()
+            except BrokenPipeError:
+                pass
+
     def wait(self, timeout_s: Optional[float] = None) -> RunResult:
         """Wait for the end; past `timeout_s` (None: no limit), kill it and report a TIMEOUT."""
         try:
@@ -177,6 +195,7 @@ class SandboxProcess:
     def _result(self) -> RunResult:
         if self._ended is None:
             self._ended = time.monotonic()
+        self.close_input()
         truncated = False
         if self._log is not None:
             self._log.join(LOG_DRAIN_TIMEOUT_S)

@@ -217,6 +217,9 @@ class _FeedbackRecorder:
     def connected(self):
         return self._subscriber.get_num_connections() > 0
 
+    def unregister(self):
+        self._subscriber.unregister()
+
     def of_goal(self, goal_id, sent_s):
         """[(s after the goal was sent, the feedback's fields)] of goal `goal_id`, in arrival order."""
         with self._lock:
@@ -422,7 +425,12 @@ class GradingContext:
 
     def find_actions(self, specs: Sequence, by_type_grace_s: float) -> Dict[str, FoundService]:
         """Find every action spec (suite_file.ServiceSpec of `actions:`) by its <ns>/result topic, as described in
-        the module docstring. Returns {spec.name: FoundService}, `found` being the action namespace."""
+        the module docstring. Returns {spec.name: FoundService}, `found` being the action namespace. The action
+        clients of an earlier lookup are let go first: their server may have been another exercise's node."""
+        for client, recorder in self._action_clients.values():
+            client.action_client.stop()
+            recorder.unregister()
+        self._action_clients.clear()
         expected = {spec.name: spec.type.split("/")[1] for spec in specs}
 
         def snapshot():

@@ -7,14 +7,21 @@ context failing to start) gets an error verdict; every check of the suite is lis
 
 `main()` is `rosrun lab_grader run_checks --suite <name or path> --out <results.json> [--check-timeout S]
 [--ground-truth SOCKET] [--exercise FILE]` (a suite with a world needs SOCKET, tb3_sim's ~ground_truth_socket;
---exercise runs only the checks of the services and actions the course's FILE serves, for the grader, which runs
-each exercise's node alone):
+--exercise runs only the checks of the services and actions the course's FILE serves):
 the results file (lab_grader.checks.verdicts) is always written, atomically, also when checks errored or the
 runner was interrupted (then "complete": false); exit code 0 once it is written, 2 for a bad suite or arguments
 (nothing written), 1 if the file could not be written. Each check prints one line, `[3/17] pass  timed_fwd ...`,
 as it ends (the grader shows the latest in its progress line).
+
+`--serve` (instead of --out) is the grader's way, which runs each exercise's node alone: one runner (one rospy node,
+one ground-truth connection, made while the first exercise's node starts) grades exercise after exercise, each on
+a line of its stdin, `{"exercise": FILE, "out": results.json, "log": exercise.log}` in JSON (`serve`); it writes
+that exercise's results file and check lines, then reads the next line, and ends at the end of its input. Starting
+a runner per exercise cost its imports, init_node and connections each time (2-4 s of wall time an exercise on a
+loaded machine).
 """
 import argparse
+import json
 import sys
 import time
 from pathlib import Path
@@ -111,6 +118,44 @@ def exercise_suite(suite, node):
                           checks=tuple(check for check in suite.checks if check.id in exercise.check_ids))
 
 
+def serve(suite, make_context, lines, check_timeout_s=None, log=print):
+    """Grade one exercise of `suite` per line of `lines` (JSON {"exercise", "out", "log"}, see the module docstring)
+    with one context from `make_context()`, made at once (so it is ready when the first line comes). Each
+    exercise's results are written to its "out" and its check lines to its "log". Returns at the end of `lines`,
+    or once an exercise was interrupted; a line that is not such a command is a SuiteError (nothing else is read:
+    its writer would wait for a results file that never comes), a results file that cannot be written an OSError."""
+    try:
+        context = make_context()
+        context.wait_until_ready()
+    except (Interrupted, KeyboardInterrupt):
+        return
+    except Exception as error:  # noqa: BLE001 - each exercise's results say why its checks could not run
+        log("setup failed: {}: {}".format(type(error).__name__, error))
+        context = error
+
+    def shared_context():
+        if isinstance(context, Exception):
+            raise context
+        return context
+
+    for line in lines:
+        try:
+            command = json.loads(line)
+            exercise, out, log_path = command["exercise"], Path(command["out"]), Path(command["log"])
+            part = exercise_suite(suite, exercise)
+        except (ValueError, KeyError, TypeError) as error:
+            raise SuiteError("not a command {{\"exercise\", \"out\", \"log\"}}: {!r} ({}: {})".format(
+                line.strip(), type(error).__name__, error)) from None
+        with open(log_path, "a") as exercise_log:
+            document = run_suite(part, shared_context, check_timeout_s,
+                                 log=lambda text: print(text, file=exercise_log, flush=True))
+            write_results(out, document)
+            print("score {}/{} -> {}".format(document["score"], document["max_score"], out), file=exercise_log,
+                  flush=True)
+        if not document["complete"]:
+            return
+
+
 # ---- command line ---------------------------------------------------------------------------------------------------
 
 def positive_seconds(text):
@@ -129,7 +174,10 @@ def parse_args(argv):
         "master (the student's nodes, and tb3_sim if the suite has a world, must be running) and write the results "
         "as JSON.")
     parser.add_argument("--suite", required=True, help="a suite name (suites/<name>.yaml) or a suite file path")
-    parser.add_argument("--out", required=True, type=Path, help="the results file to write (JSON)")
+    parser.add_argument("--out", type=Path, help="the results file to write (JSON)")
+    parser.add_argument("--serve", action="store_true",
+                        help="grade one exercise per line of stdin, {\"exercise\": FILE, \"out\": PATH, \"log\": "
+                        "PATH} in JSON, until its end (instead of --out and --exercise)")
     parser.add_argument("--check-timeout", type=positive_seconds, default=None, metavar="S",
                         help="reply timeout of every check, seconds of sim time (default: each check's timeout_s)")
     parser.add_argument("--exercise", metavar="FILE", default=None,
@@ -139,7 +187,12 @@ def parse_args(argv):
                         help="tb3_sim's private ground-truth socket (its ~ground_truth_socket); needed when the "
                         "suite has a world: the checks measure the robot through it, never through /odom")
     # ROS remappings (name:=value) are for rospy, not for us, as rospy.myargv would strip them.
-    return parser.parse_args([arg for arg in argv if ":=" not in arg])
+    args = parser.parse_args([arg for arg in argv if ":=" not in arg])
+    if args.serve and (args.out is not None or args.exercise is not None):
+        parser.error("--serve takes its exercises and results files from stdin: no --out or --exercise")
+    if not args.serve and args.out is None:
+        parser.error("the following arguments are required: --out (or --serve)")
+    return args
 
 
 def main(argv=None):
@@ -160,6 +213,21 @@ def main(argv=None):
         contexts.append(GradingContext(robot=suite.world is not None, ground_truth=args.ground_truth))
         return contexts[-1]
 
+    if args.serve:
+        try:
+            serve(suite, make_context, sys.stdin, args.check_timeout, log=lambda line: print(line, flush=True))
+        except KeyboardInterrupt:
+            pass     # stopped while waiting for a command: every results file asked for so far is written
+        except SuiteError as error:
+            print("run_checks: {}".format(error), file=sys.stderr)
+            return 2
+        except OSError as error:
+            print("run_checks: cannot write a results file: {}".format(error), file=sys.stderr)
+            return 1
+        finally:
+            for context in contexts:
+                context.shutdown()
+        return 0
     document = run_suite(suite, make_context, args.check_timeout, log=lambda line: print(line, flush=True))
     try:
         write_results(args.out, document)
