@@ -24,6 +24,9 @@ from roslab.browser import HeadlessBrowser
 from .sample_submissions import make_submission
 
 GRADE_TIMEOUT_S = 900
+# The class's grade run is the first test's set-up (about 450-580 s on two busy cores): pytest-timeout's 600 s per
+# test would cut it before the grade command's own GRADE_TIMEOUT_S says it hangs.
+pytestmark = pytest.mark.timeout(GRADE_TIMEOUT_S + 60)
 # The older message packages (com2009_msgs, tuos_ros_msgs) are the course template's: its calibration test covers them.
 CLASS = ("reference", "wrong_direction", "does_not_build", "student_style", "wrong_duration", "never_stops",
          "ignores_invalid_input", "bare_values", "own_service_names", "python2_syntax", "course_template")
