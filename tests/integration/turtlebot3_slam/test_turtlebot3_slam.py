@@ -74,18 +74,18 @@ class Mapping:
             api = rosgraph.Master("/test", master_uri=ros_master.uri)
             for name in ODOMETRY_ERROR:
                 api.setParam(f"/gazebo/{name}", ODOMETRY_ERROR[name] if odometry_error else 0.0)
-            self.world = self._start(["roslaunch", "--wait", *self.route.launch, "gui:=false",
+            self.world = self.start(["roslaunch", "--wait", *self.route.launch, "gui:=false",
                                       f"real_time_factor:={REAL_TIME_FACTOR}"], "world", ros_master.env)
             wait_for_service(ros_master.uri, "/gazebo/get_model_state", STARTUP_TIMEOUT_S)
             wait_for_param(ros_master.uri, "/use_sim_time")
-            self.slam = self._start(["roslaunch", "--wait", "turtlebot3_slam", "turtlebot3_slam.launch"], "slam",
+            self.slam = self.start(["roslaunch", "--wait", "turtlebot3_slam", "turtlebot3_slam.launch"], "slam",
                                     _no_display_env(ros_master))
             if odometry_error:
                 self._start_odometry_only(api)
             wait_for_service(ros_master.uri, "/dynamic_map", STARTUP_TIMEOUT_S)
             wait_until(lambda: _try_map("/dynamic_map") is not None, 30, "the first map")
             self.route_file = ros_master.workdir / f"route-{world_name}.json"
-            driver = self._start([sys.executable, str(DRIVER), world_name, str(self.route_file)], "driver",
+            driver = self.start([sys.executable, str(DRIVER), world_name, str(self.route_file)], "driver",
                                  ros_master.env)
             wait_until(lambda: not driver.running(), 240, "the scripted drive to finish")
             assert "done" in driver.output(), driver.output()
@@ -93,7 +93,8 @@ class Mapping:
             self._stop_processes()
             raise
 
-    def _start(self, command, label, env):
+    def start(self, command, label, env):
+        """Start `command` with `env` as part of this session (ended by close()), its output in the module's folder."""
         log = self.master.workdir / f"{self.world_name}{'-error' if self.odometry_error else ''}-{label}.log"
         process = RosProcess(command, env, log)
         self.processes.append(process)
@@ -105,7 +106,7 @@ class Mapping:
         params.update(base_frame="base_footprint", minimumScore=1e9, transform_publish_period=0.0)
         for name, value in params.items():
             api.setParam(f"/{ODOMETRY_ONLY}/{name}", value)
-        self._start(["rosrun", "gmapping", "slam_gmapping", f"__name:={ODOMETRY_ONLY}", "map:=/odometry_map",
+        self.start(["rosrun", "gmapping", "slam_gmapping", f"__name:={ODOMETRY_ONLY}", "map:=/odometry_map",
                      "map_metadata:=/odometry_map_metadata", "dynamic_map:=/odometry_dynamic_map"],
                     ODOMETRY_ONLY, self.master.env)
         wait_for_service(self.master.uri, "/odometry_dynamic_map", STARTUP_TIMEOUT_S)
@@ -293,7 +294,7 @@ def saved_nav_world(sessions, tmp_path_factory):
     try:
         grid, odometry_grid = _settled_map("/dynamic_map"), _settled_map("/odometry_dynamic_map")
         # As the course saves it: `cd maps; rosrun map_server map_saver -f NAME`.
-        saver = mapping._start(["bash", "-c", f"cd {folder} && rosrun map_server map_saver -f nav_world"], "saver",
+        saver = mapping.start(["bash", "-c", f"cd {folder} && rosrun map_server map_saver -f nav_world"], "saver",
                                mapping.master.env)
         saver.popen.wait(timeout=SAVER_TIMEOUT_S)
         student = read_map_as_a_student(mapping.master.env)
@@ -321,7 +322,7 @@ def test_map_saver_saves_the_nav_world_map_and_a_student_reads_it_from_map(saved
 def test_map_server_serves_the_saved_map_back_and_slam_beats_the_drifting_odometry_alone(saved_nav_world):
     mapping, grid, odometry_grid, _, _, folder = saved_nav_world
     # Beside the SLAM's /map, so under other names.
-    mapping._start([node_path("map_server", "map_server"), str(folder / "nav_world.yaml"), "map:=/saved_map",
+    mapping.start([node_path("map_server", "map_server"), str(folder / "nav_world.yaml"), "map:=/saved_map",
                     "map_metadata:=/saved_map_metadata", "static_map:=/saved_static_map"], "map_server",
                    mapping.master.env)
     wait_for_service(mapping.master.uri, "/saved_static_map", STARTUP_TIMEOUT_S)
