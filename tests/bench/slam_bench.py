@@ -6,10 +6,10 @@ Measures:
 - with the algorithm alone (lab_nav.slam fed by tb3_sim's core physics and LiDAR along roslab.mapping_routes'
   routes, no ROS): the median time of one scan match (target <= 15 ms) and of a whole processed scan (match and
   map update, target <= one scan period), and the map's precision and recall against the true walls
-  (roslab.map_quality, 0.10 m, 3 m) in turtlebot3_world and turtlebot3_house, with true odometry, with tb3_sim's
-  odometry error (2 % scale, 1 deg/m heading drift), and that erring odometry alone (no matching) for comparison
-  (targets 0.95 / 0.90 without error, 0.90 / 0.85 with it, at most 0.85 / 0.85 for the odometry alone: visibly
-  worse);
+  (roslab.map_quality, 0.10 m, 3 m) in turtlebot3_world, turtlebot3_house and the course's nav_world, with true
+  odometry, with tb3_sim's odometry error (2 % scale, 1 deg/m heading drift), and that erring odometry alone (no
+  matching) for comparison (targets 0.95 / 0.90 without error, 0.90 / 0.85 with it, at most 0.85 / 0.85 for the
+  odometry alone: visibly worse);
 - on ROS (turtlebot3_world.launch + turtlebot3_slam.launch, headless, the robot driving a circle): the SLAM
   node's CPU at real time with 5 Hz scans (target <= 20 % of a core), and the highest real-time factor of
   FACTORS at which no map update is missed - the largest gap between two maps stays within map_update_interval
@@ -38,7 +38,7 @@ from tb3_sim.core.geometry import Pose2D  # noqa: E402
 from tb3_sim.core.lidar import LIDAR_UPDATE_RATE_HZ, Lidar  # noqa: E402
 from tb3_sim.core.odometry_error import DriftingOdometry, OdometryErrorModel  # noqa: E402
 from tb3_sim.core.world import World  # noqa: E402
-from tb3_sim.core.world_file import load_world, shipped_world_path  # noqa: E402
+from tb3_sim.core.world_file import load_world  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[2]
 TB3_PARAMS = yaml.safe_load((REPO / "catkin_ws/src/compat/turtlebot3_slam/config/gmapping_params.yaml").read_text())
@@ -61,8 +61,8 @@ def offline_mapping(world_name, odometry_error=None, matching=True):
     """Drive the world's route in tb3_sim's core with the SLAM fed by the LiDAR at 5 Hz and the (erring)
     odometry. Returns (map values, MapGeometry, laser positions along the route, match seconds, processed-scan
     seconds)."""
-    spawn, waypoints = ROUTES[world_name]
-    world = World(load_world(shipped_world_path(world_name)), Pose2D(*spawn))
+    route = ROUTES[world_name]
+    world = World(load_world(route.world_path()), Pose2D(*route.spawn))
     robot, lidar = world.robot, Lidar(0)
     params = dict(TB3_PARAMS, base_frame="base_footprint", **({} if matching else {"minimumScore": 1e9}))
     slam = Slam(params_from_dict(params))
@@ -71,7 +71,7 @@ def offline_mapping(world_name, odometry_error=None, matching=True):
     odometry = DriftingOdometry(odometry_error or OdometryErrorModel(), 0)
     lasers, processed_s, next_scan_s = [], [], 0.0
     steps = round(CONTROL_PERIOD_S / world.step_s)
-    for waypoint in waypoints:
+    for waypoint in route.waypoints:
         while (command := steer(tuple(robot.pose), waypoint)) is not None:
             robot.set_command(*command)
             for _ in range(steps):
@@ -100,7 +100,7 @@ def _timed(function, durations):
 
 
 def quality(world_name, values, geometry, lasers):
-    walls = map_quality.world_walls(world_name)
+    walls = map_quality.world_walls(ROUTES[world_name].world_path())
     return (map_quality.precision(values, geometry, walls, TOLERANCE_M),
             map_quality.recall(values, geometry, walls, lasers[::5], REACH_M, TOLERANCE_M))
 

@@ -12,7 +12,8 @@ Measures, each on a private roscore with the simulator started by its launch fil
 - wall time from `roslaunch` to the first /scan message (target <= 1.5 s);
 - with `rostopic hz` taking the default 1920x1080 /camera/rgb/image_raw at 30 Hz (it subscribes with AnyMsg, so
   it costs no decoding): the real-time factor at factor 1 (target >= 0.95) and the simulator's CPU (<= 100 %,
-  one core).
+  one core), in turtlebot3_world and in tuos_simulations' line_following (COM2009 Part 6: the camera draws its
+  8 x 8 m marked floor, a pink track on yellow, in perspective in every frame).
 `run()` returns the rows [(name, value, unit, target, comparison)] for scripts/bench's table
 (`scripts/bench tb3_sim_bench` runs only these).
 """
@@ -33,9 +34,11 @@ from tb3_sim.tools.benchmark import bench_scan  # noqa: E402
 MEASURE_S = 10.0
 CAMERA_TOPIC = "/camera/rgb/image_raw"
 WORLD_ARGS = ("world:=turtlebot3_world", "x_pos:=-2.0", "y_pos:=-0.5", "gui:=false")
-# (launch command, robot namespaces): one robot in turtlebot3_world, or multi_turtlebot3's three in the house.
+# (launch command, robot namespaces): one robot in turtlebot3_world, multi_turtlebot3's three in the house, or one
+# on the line_following course floor.
 ONE_ROBOT = (("tb3_sim", "tb3_sim.launch", *WORLD_ARGS), ("",))
 THREE_ROBOTS = (("turtlebot3_gazebo", "multi_turtlebot3.launch", "gui:=false"), ("/tb3_0", "/tb3_1", "/tb3_2"))
+LINE_FOLLOWING = (("tuos_simulations", "line_following.launch", "gui:=false"), ("",))
 # Debian's robot_state_publisher (1.15.2) looks tf_prefix up on the master on every joint_states message, three
 # XML-RPC calls each: at 16x with three robots the master alone takes about 60 % of a core and the 2 cores run
 # out. Ending the three shows what the simulator itself does with three robots.
@@ -117,6 +120,7 @@ def launch_to_first_scan_s():
 def run():
     """[(name, value, unit, target, comparison)] rows; comparison is ">=" or "<=" against target."""
     camera_rtf, camera_cpu = _with_simulator(1, _rtf_and_cpu, camera_subscriber=True)
+    floor_rtf, floor_cpu = _with_simulator(1, _rtf_and_cpu, camera_subscriber=True, robots=LINE_FOLLOWING)
     return [
         ("real-time factor at ~real_time_factor:=0 (/scan, /odom subscribed)", real_time_factor_unpaced(), "x",
          120.0, ">="),
@@ -132,6 +136,10 @@ def run():
         ("roslaunch to first /scan", launch_to_first_scan_s(), "s", 1.5, "<="),
         ("real-time factor at factor 1, 1920x1080 camera subscribed", camera_rtf, "x", 0.95, ">="),
         ("CPU at factor 1, 1920x1080 camera subscribed", camera_cpu, "% of a core", 100.0, "<="),
+        ("real-time factor at factor 1, 1920x1080 camera subscribed, line_following's marked floor", floor_rtf, "x",
+         0.95, ">="),
+        ("CPU at factor 1, 1920x1080 camera subscribed, line_following's marked floor", floor_cpu, "% of a core",
+         100.0, "<="),
     ]
 
 

@@ -15,16 +15,16 @@ from scipy.spatial import cKDTree
 from tb3_sim.core.lidar import cast_rays
 from tb3_sim.core.obstacles import static_obstacles
 from tb3_sim.core.shapes import Circle, Polygon, visible_at
-from tb3_sim.core.world_file import load_world, shipped_world_path
+from tb3_sim.core.world_file import load_world
 
 SCAN_PLANE_M = 0.132
 RAY_STEP_RAD = math.radians(0.5)
 CELL_M = 0.05
 
 
-def world_walls(world_name):
-    """The static shapes of a shipped world that the scan plane meets."""
-    shapes = load_world(shipped_world_path(world_name)).static_shapes
+def world_walls(world_path):
+    """The static shapes of the tb3_sim world file at `world_path` that the scan plane meets."""
+    shapes = load_world(world_path).static_shapes
     return tuple(shape for shape in shapes if visible_at(shape, SCAN_PLANE_M))
 
 

@@ -4,13 +4,13 @@
     route_driver.py WORLD_NAME OUT_JSON
 
 It follows roslab.mapping_routes.ROUTES[WORLD_NAME] at CONTROL_HZ of sim time, steering by the simulator's ground
-truth (/gazebo/model_states: the one model named turtlebot3*, as the world launch files name the robot), which
-only the test sees - the SLAM under test gets /scan and odometry only. At the
-end the robot stops and OUT_JSON gets the laser positions along the route (every RECORD_STEP_M), for the map's
-recall. Prints `done` when finished.
+truth (/gazebo/model_states: the robot's model, named as the world's launch file names it), which only the test
+sees - the SLAM under test gets /scan and odometry only. At the end the robot stops and OUT_JSON gets the laser
+positions along the route (every RECORD_STEP_M), for the map's recall. Prints `done` when finished.
 """
 import json
 import math
+import os
 import sys
 from pathlib import Path
 
@@ -21,14 +21,14 @@ from geometry_msgs.msg import Twist
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 from roslab.mapping_routes import ROUTES, steer  # noqa: E402  (needs the sys.path entry above)
 
-ROBOT_PREFIX = "turtlebot3"
 CONTROL_HZ = 20.0
 RECORD_STEP_M = 0.25
 LASER_BEHIND_M = 0.064
 
 
 class RouteDriver:
-    def __init__(self, waypoints):
+    def __init__(self, robot, waypoints):
+        self.robot = robot
         self.waypoints = waypoints
         self.pose = None
         self.laser_positions = []
@@ -36,9 +36,8 @@ class RouteDriver:
         rospy.Subscriber("/gazebo/model_states", ModelStates, self._on_states, queue_size=1)
 
     def _on_states(self, message):
-        robots = [i for i, name in enumerate(message.name) if name.startswith(ROBOT_PREFIX)]
-        if len(robots) == 1:
-            pose = message.pose[robots[0]]
+        if self.robot in message.name:
+            pose = message.pose[message.name.index(self.robot)]
             q = pose.orientation
             yaw = math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
             self.pose = (pose.position.x, pose.position.y, yaw)
@@ -72,7 +71,8 @@ class RouteDriver:
 def main():
     world, out_path = sys.argv[1:]
     rospy.init_node("route_driver")
-    driver = RouteDriver(ROUTES[world][1])
+    route = ROUTES[world]
+    driver = RouteDriver(route.robot_name(os.environ["TURTLEBOT3_MODEL"]), route.waypoints)
     driver.run()
     with open(out_path, "w") as out:
         json.dump(driver.laser_positions, out)

@@ -13,8 +13,9 @@ from tb3_sim.core.materials import FLOOR_RGB, SKY_RGB
 from tb3_sim.core.turtlebot3 import WAFFLE_R200
 from tb3_sim.core.world import World
 from tb3_sim.core.world_file import parse_world
-from tb3_sim.ros.outputs.camera import JPEG_QUALITY, RGB_TOPIC, CameraOutput
+from tb3_sim.ros.outputs.camera import JPEG_QUALITY, RGB_TOPIC, CameraOutput, FloorTextures
 from tb3_sim.ros.robot_naming import RobotNaming
+from tb3_sim.view import floor_raster
 from tb3_sim.view.floor_raster import floor_texture
 
 MOUNT_M = WAFFLE_R200.height_m
@@ -174,3 +175,15 @@ def test_the_robots_camera_output_shows_the_worlds_floor_layer():
     camera = CameraOutput(world.robot, RobotNaming(), WAFFLE_R200, 320, 180)
     reading = camera.read(world, 0.0, {RGB_TOPIC})
     assert tuple(reading.rgb[-1, 160]) == (228, 228, 0)
+
+
+def test_the_floor_texture_built_at_world_load_is_the_one_every_camera_uses(monkeypatch):
+    world = World(parse_world({"name": "w", "floor": {"size": [4, 4], "color": "#ffff00"}}))
+    textures = FloorTextures()
+    textures.prepare(world.description.floor)
+    built = textures.of(world.description.floor)   # waits for the build the world load started
+    monkeypatch.setattr(floor_raster, "floor_texture", lambda floor: pytest.fail("rasterised again"))
+    assert textures.of(world.description.floor) is built and textures.of(None) is None
+    for _ in range(2):
+        camera = CameraOutput(world.robot, RobotNaming(), WAFFLE_R200, 320, 180, floor_textures=textures)
+        assert tuple(camera.read(world, 0.0, {RGB_TOPIC}).rgb[-1, 160]) == (228, 228, 0)

@@ -6,12 +6,12 @@ Subscribes `scan` (sensor_msgs/LaserScan, queue 5) and TF (odom_frame -> base_fr
 for up to TF_WAIT_S of sim time, as gmapping's TF message filter holds a scan until odometry reaches it; a scan
 whose transform never comes is skipped with a throttled warning). Publishes `map` (nav_msgs/OccupancyGrid,
 latched, frame map_frame, stamped now) and `map_metadata` (latched) with each map, `~entropy` (std_msgs/Float64,
-latched, the matcher's pose entropy, only when > 0, as gmapping), and TF map_frame -> odom_frame every
-transform_publish_period of sim time from start, stamped now + tf_delay: identity until the first scan is
-processed, then the SLAM's correction. Service `dynamic_map` (nav_msgs/GetMap): the last map; before the first
-one the call fails, as gmapping's handler returns false. Parameters: lab_nav.slam.params; a bad value stops the
-node with one line naming it. Survives a restarted master (master_reconnect) and the clock jumping back (a
-simulator reset: the map is kept, TF's buffer is cleared by its listener, the next scan makes a map at once).
+latched, the matcher's pose entropy, only when > 0, as gmapping), and TF map_frame -> odom_frame on every tick of
+transform_publish_period of sim time from start, stamped tick + tf_delay (gmapping.transform_ticks): identity until
+the first scan is processed, then the SLAM's correction. Service `dynamic_map` (nav_msgs/GetMap): the last map;
+before the first one the call fails, as gmapping's handler returns false. Parameters: lab_nav.slam.params; a bad
+value stops the node with one line naming it. Survives a restarted master (master_reconnect) and the clock jumping
+back (a simulator reset: the map is kept, TF's buffer is cleared by its listener, the next scan makes a map at once).
 """
 
 import sys
@@ -25,6 +25,7 @@ from sensor_msgs.msg import LaserScan
 from std_msgs.msg import Float64
 
 from gmapping import messages
+from gmapping.transform_ticks import TransformTicks
 from lab_nav.slam import Slam, SlamError, params_from_dict
 from master_reconnect import keep_registered
 
@@ -55,23 +56,26 @@ class SlamNode:
         self._scan_sub = rospy.Subscriber("scan", LaserScan, self._on_scan, queue_size=5)
 
     def spin_transform(self):
-        """Send map -> odom every transform_publish_period of sim time until shutdown (0: never)."""
+        """Send map -> odom on every tick of transform_publish_period of sim time until shutdown (0: never), the
+        ticks a late wake-up slept past included (gmapping.transform_ticks)."""
         period = self.params.transform_publish_period
         if period <= 0.0:
             rospy.spin()
             return
-        rate = rospy.Rate(1.0 / period, reset=True)
-        last_stamp = None
+        ticks = TransformTicks(period)
         while not rospy.is_shutdown():
-            with self._lock:
-                correction = self.slam.correction
-            stamp = rospy.Time.now() + rospy.Duration(self.params.tf_delay)
-            if stamp != last_stamp:  # a late wake-up on an unchanged clock would repeat it (TF_REPEATED_DATA)
-                self._tf_broadcaster.sendTransform(messages.transform_message(
-                    correction, self.params.map_frame, self.params.odom_frame, stamp))
-                last_stamp = stamp
+            now = rospy.get_time()
+            if now > 0.0:  # 0: no /clock yet
+                with self._lock:
+                    correction = self.slam.correction
+                for tick in ticks.due(now):
+                    self._tf_broadcaster.sendTransform(messages.transform_message(
+                        correction, self.params.map_frame, self.params.odom_frame,
+                        rospy.Time.from_sec(tick + self.params.tf_delay)))
             try:
-                rate.sleep()
+                rospy.sleep(ticks.next_s(now) - now)
+            except rospy.ROSTimeMovedBackwardsException:
+                continue
             except rospy.ROSInterruptException:
                 break
 

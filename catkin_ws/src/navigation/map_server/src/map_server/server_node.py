@@ -2,12 +2,14 @@
 
 Node name map_server_<wall nsec> when run bare (roscpp's anonymous name), the launch file's name otherwise.
 Loads the map, waits for valid ROS time (under /use_sim_time, for /clock), then publishes /map and
-/map_metadata once, latched, with header.stamp = map_load_time = that time. /static_map (nav_msgs/GetMap)
-answers the map and logs "Sending map"; /change_map (nav_msgs/LoadMap) loads another YAML and publishes it again,
-answering result 0 (SUCCESS) with the map, or 255 (UNDEFINED_FAILURE) after logging why. ~frame_id (default
-"map") is the header's frame. The deprecated `map_server IMAGE RESOLUTION` form reads ~negate (0),
-~occupied_thresh (0.65) and ~free_thresh (0.196) and uses origin 0. Any error in the first map logs
-map_server's own ERROR line and exits 255. Console lines are in roscpp's format, as the C++ original prints them.
+/map_metadata once, latched, with header.stamp = map_load_time = that time. The services are advertised just
+before that first publication, as map_server does, so a caller (amcl asks /static_map) never gets an empty map.
+/static_map (nav_msgs/GetMap) answers the map and logs "Sending map"; /change_map (nav_msgs/LoadMap) loads
+another YAML and publishes it again, answering result 0 (SUCCESS) with the map, or 255 (UNDEFINED_FAILURE) after
+logging why. ~frame_id (default "map") is the header's frame. The deprecated `map_server IMAGE RESOLUTION` form
+reads ~negate (0), ~occupied_thresh (0.65) and ~free_thresh (0.196) and uses origin 0. Any error in the first map
+logs map_server's own ERROR line and exits 255. Console lines are in roscpp's format, as the C++ original prints
+them.
 """
 
 import sys
@@ -47,15 +49,15 @@ def _private_param(name, default, kind, what):
 
 
 class MapServer:
-    """The latched topics and the two services; `load_yaml` and `load_description` publish a new map."""
+    """The latched topics and the two services (advertised with the first map); `load_yaml` and
+    `load_description` publish a new map."""
 
     def __init__(self, frame_id):
         self._frame_id = frame_id
-        self._response = GetMapResponse()
+        self._response = None
+        self._services = ()
         self._metadata_pub = rospy.Publisher("map_metadata", MapMetaData, queue_size=1, latch=True)
         self._map_pub = rospy.Publisher("map", OccupancyGrid, queue_size=1, latch=True)
-        rospy.Service("static_map", GetMap, self._static_map)
-        rospy.Service("change_map", LoadMap, self._change_map)
 
     def load_yaml(self, yaml_path):
         self.load_description(read_map_yaml(yaml_path))
@@ -67,6 +69,9 @@ class MapServer:
         rospy.loginfo("Read a %d X %d map @ %.3f m/cell", message.info.width, message.info.height,
                       message.info.resolution)
         self._response = GetMapResponse(map=message)
+        if not self._services:
+            self._services = (rospy.Service("static_map", GetMap, self._static_map),
+                              rospy.Service("change_map", LoadMap, self._change_map))
         self._metadata_pub.publish(message.info)
         self._map_pub.publish(message)
 

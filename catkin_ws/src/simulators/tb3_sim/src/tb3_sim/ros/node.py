@@ -101,6 +101,7 @@ from tb3_sim.ros.config import config_from_params
 from tb3_sim.ros.gazebo_api import GazeboApi
 from tb3_sim.ros.ground_truth import GroundTruthChannel
 from tb3_sim.ros.outputs import OutputPublisher, robot_outputs, world_outputs
+from tb3_sim.ros.outputs.camera import FloorTextures
 from tb3_sim.ros.outputs.clock import ClockOutput
 from tb3_sim.ros.outputs.scan import ScanOutput
 from tb3_sim.ros.publishers import output_publisher
@@ -132,6 +133,8 @@ class SimNode:
         self._physics = PhysicsProperties.for_pacing(world.step_s, config.real_time_factor)
         self._pacer = Pacer(config.real_time_factor)
         self._outputs = OutputPublisher(world_outputs(config), output_publisher)
+        self._floor_textures = FloorTextures()
+        self._floor_textures.prepare(world.description.floor)   # at world load, not at the first camera image
         self._clock = self._outputs.output(ClockOutput)
         self._namings = {}        # robot name -> RobotNaming
         self._cmd_vel = []        # one Subscriber per robot
@@ -170,7 +173,8 @@ class SimNode:
     def _attach(self, robot, naming):
         """Give `robot` its ROS ends: outputs, cmd_vel and static transforms (world locked, or not yet shared)."""
         self._namings[robot.name] = naming
-        self._outputs.add(robot_outputs(self.config, robot, naming, len(self._namings) - 1), self._world.time_s)
+        self._outputs.add(robot_outputs(self.config, robot, naming, len(self._namings) - 1, self._floor_textures),
+                          self._world.time_s)
         self._cmd_vel.append(rospy.Subscriber(naming.topic("cmd_vel"), Twist, self._on_cmd_vel, callback_args=robot,
                                               queue_size=1))
         if self._static_tf is not None:

@@ -23,6 +23,7 @@ included, lit as Gazebo lights the course floors (core.floor_texture); the depth
 distance wherever the floor rectangle shows.
 """
 
+import threading
 from typing import NamedTuple, Optional
 
 import numpy as np
@@ -60,13 +61,42 @@ class CameraReading(NamedTuple):
     depth: Optional[np.ndarray]
 
 
+class FloorTextures:
+    """The camera's texture of a world's floor layer (view.floor_raster: about 1 s for a detailed 8 x 8 m floor,
+    20 s on a 2-core machine at load 20 with the imports it needs), built once and shared by every camera of the
+    simulator. The node starts building the world's at world load (`prepare`), as Gazebo loads a world's textures,
+    in a thread of its own, so neither the node's start nor the physics loop at the first image waits for it; a
+    camera whose first image comes sooner waits for the build to finish."""
+
+    def __init__(self):
+        self._lock = threading.Lock()
+        self._floor = self._texture = None
+
+    def prepare(self, floor):
+        """Start building the texture of the floor.Floor `floor` (None: no floor layer, nothing to build)."""
+        if floor is not None:
+            threading.Thread(target=self.of, args=(floor,), name="floor texture", daemon=True).start()
+
+    def of(self, floor):
+        """The FloorTexture of the floor.Floor `floor`; None for a world without a floor layer."""
+        if floor is None:
+            return None
+        with self._lock:
+            if floor is not self._floor:
+                from tb3_sim.view.floor_raster import floor_texture  # Qt: loaded by worlds with a floor only
+
+                self._floor, self._texture = floor, floor_texture(floor)
+            return self._texture
+
+
 class CameraOutput(Output):
     """`robot`'s camera (`spec`, a turtlebot3.CameraSpec), named by `naming` (a RobotNaming); the image size and
-    rate are the spec's unless given."""
+    rate are the spec's unless given; the floor's texture comes from `floor_textures` (a FloorTextures, its own
+    unless given)."""
 
     lazy = True
 
-    def __init__(self, robot, naming, spec, width_px=None, height_px=None, rate_hz=None):
+    def __init__(self, robot, naming, spec, width_px=None, height_px=None, rate_hz=None, floor_textures=None):
         self.rate_hz = rate_hz or spec.rate_hz
         super().__init__()
         self.robot = robot
@@ -77,6 +107,7 @@ class CameraOutput(Output):
         depth_min_m, depth_max_m = spec.depth_range_m or (None, None)
         self.renderer = CameraRenderer(self.intrinsics, spec.height_m, FLOOR_RGB, SKY_RGB, far_clip_m=spec.clip_far_m,
                                        near_clip_m=spec.clip_near_m, depth_min_m=depth_min_m, depth_max_m=depth_max_m)
+        self._floor_textures = floor_textures or FloorTextures()
         self._floor = None
         self._depth_topic = naming.topic(DEPTH_TOPIC)
         topics = [
@@ -101,16 +132,10 @@ class CameraOutput(Output):
         return CameraReading(now_s, rgb, depth)
 
     def _see_floor(self, floor):
-        """Give the renderer the world's floor layer (rasterised once, at the first image: about 1 s with a
-        detailed floor) or keep the plain ground plane when the world has none."""
+        """Give the renderer the world's floor layer, or keep the plain ground plane when the world has none."""
         if floor is not self._floor:
             self._floor = floor
-            if floor is None:
-                self.renderer.use_floor(None)
-            else:
-                from tb3_sim.view.floor_raster import floor_texture  # Qt: loaded by worlds with a floor only
-
-                self.renderer.use_floor(floor_texture(floor))
+            self.renderer.use_floor(self._floor_textures.of(floor))
 
     def _header(self, message, time_s):
         message.header.stamp = messages.stamp(time_s)

@@ -26,9 +26,10 @@ def world_outputs(config):
     ]
 
 
-def robot_outputs(config, robot, naming, index):
+def robot_outputs(config, robot, naming, index, floor_textures=None):
     """A fresh instance of every output of `robot` (a core.robot.Robot), the `index`-th robot (its LiDAR noise
-    stream, and its odometry error's, is the config's seed + index), set up from `config` (a ros.config.SimConfig)."""
+    stream, and its odometry error's, is the config's seed + index), set up from `config` (a ros.config.SimConfig);
+    its camera takes the floor's texture from `floor_textures` (camera.FloorTextures, shared by the robots)."""
     drift = DriftingOdometry(config.odometry_error, config.seed + index) if config.odometry_error.enabled else None
     outputs = [
         OdometryOutput(robot, naming, drift),
@@ -38,5 +39,5 @@ def robot_outputs(config, robot, naming, index):
     camera = robot.model.camera
     if camera is not None:
         outputs.append(CameraOutput(robot, naming, camera, config.camera_width, config.camera_height,
-                                    config.camera_rate))
+                                    config.camera_rate, floor_textures))
     return outputs
