@@ -83,7 +83,7 @@ def test_models_are_the_originals_and_the_robot_stands_at_the_spawn_pose(case, w
     listed = [n for n in poses if n != "ground_plane" or "ground_plane" in case.models]
     assert listed == [*case.models, ROBOT_NAME]
     x, y, yaw = poses[ROBOT_NAME]
-    assert (x, y) == pytest.approx(case.spawn[:2], abs=1e-3)
+    assert (x, y) == pytest.approx(case.spawn[:2], abs=1e-3), poses
     assert math.remainder(yaw - case.spawn[2], 2 * math.pi) == pytest.approx(0.0, abs=1e-3)
 
 

@@ -17,7 +17,10 @@ from .stack import start_navigation, turtlebot3_world_cells
 
 REAL_TIME_FACTOR = 1
 GOALS, SEED = 3, 30
-PATH_RATIO = 1.2             # the path driven over the shortest grid path, summed over the goals
+# The path driven over the shortest grid path, summed over the goals: 1.17 on an idle machine, 1.20 beside another
+# realtime module (navfn's path keeps away from pillars, and the turn at each start adds to it); the bench reports
+# the 1.2 per goal (median 1.18). This bound catches a detour, not the last few percent.
+PATH_RATIO = 1.3
 CONTACT_MARGIN_M = 0.02      # nothing nearer the body than this on /scan
 # Where the simulator has the robot at "Goal reached.": move_base judges xy_goal_tolerance (0.05 m) and
 # yaw_goal_tolerance (0.17 rad) on amcl's estimate, which after a drive with turns is off by up to 0.165 m
