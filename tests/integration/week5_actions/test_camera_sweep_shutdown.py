@@ -16,4 +16,5 @@ def test_ctrl_c_mid_sweep_stops_the_robot(sweeper):
     odom = sweeper.odom_after(stopped_at + STOP_WITHIN_SIM_S + 0.5)
     assert sweeper.is_still(odom), odom["twist"]
     wait_until(lambda: "camera_sweep_action_server" in sweeper.server.output(), 5, "the server's output")
-    assert "Traceback" not in sweeper.server.output()
+    output = sweeper.server.output()
+    assert "Traceback" not in output, output[-4000:]   # whole, so that a rare thread traceback can be read
