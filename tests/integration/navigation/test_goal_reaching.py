@@ -37,14 +37,13 @@ def cells():
 
 @pytest.fixture(scope="module")
 def nav(ros_master, cells, tmp_path_factory):
-    probe = start_navigation(ros_master, tmp_path_factory.mktemp("map"), cells, REAL_TIME_FACTOR,
-                             (("/move_base/result", "move_base_msgs/MoveBaseActionResult"),
-                              ("/move_base/feedback", "move_base_msgs/MoveBaseActionFeedback"),
-                              ("/odom", "nav_msgs/Odometry"), ("/scan", "sensor_msgs/LaserScan"),
-                              ("/amcl_pose", "geometry_msgs/PoseWithCovarianceStamped")))
-    with pytest.MonkeyPatch.context() as patch:
-        patch.setenv("ROS_MASTER_URI", ros_master.uri)   # nav_goals.true_pose asks the simulator from this process
-        yield probe
+    """The stack's probe; nav_goals.true_pose asks the simulator from this process, through the ROS_MASTER_URI
+    the ros_master fixture set."""
+    return start_navigation(ros_master, tmp_path_factory.mktemp("map"), cells, REAL_TIME_FACTOR,
+                            (("/move_base/result", "move_base_msgs/MoveBaseActionResult"),
+                             ("/move_base/feedback", "move_base_msgs/MoveBaseActionFeedback"),
+                             ("/odom", "nav_msgs/Odometry"), ("/scan", "sensor_msgs/LaserScan"),
+                             ("/amcl_pose", "geometry_msgs/PoseWithCovarianceStamped")))
 
 
 @pytest.mark.realtime
