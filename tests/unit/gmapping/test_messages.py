@@ -1,26 +1,12 @@
-"""gmapping's message conversions: the map as OccupancyGrid lays it out, TF and laser mounting maths."""
+"""gmapping's message conversions: TF and laser mounting maths (the map message: tests/unit/nav_ros)."""
 import math
 
-import numpy as np
 import pytest
 import rospy
 from geometry_msgs.msg import Quaternion
 from sensor_msgs.msg import LaserScan
 
 from gmapping import messages
-from lab_nav.slam.grid import initial_geometry
-
-
-def test_the_map_message_is_row_major_from_the_origin_corner_with_identity_orientation():
-    geometry = initial_geometry(-10, -10, 10, 10, 0.05)
-    values = np.full((geometry.height, geometry.width), -1, dtype=np.int8)
-    values[2, 5] = 100
-    grid = messages.occupancy_grid(values, geometry, "map", rospy.Time(12, 5))
-    assert (grid.info.width, grid.info.height, grid.info.resolution) == (384, 384, 0.05)
-    assert (grid.info.origin.position.x, grid.info.origin.position.y, grid.info.origin.orientation.w) == \
-        (-10.0, -10.0, 1.0)
-    assert grid.info.map_load_time == rospy.Time(0) and grid.header.frame_id == "map"
-    assert grid.data[2 * 384 + 5] == 100 and grid.data.count(100) == 1
 
 
 def test_a_transform_message_carries_the_pose_as_a_yaw_quaternion():

@@ -3,7 +3,6 @@
 import math
 
 from geometry_msgs.msg import Quaternion, TransformStamped
-from nav_msgs.msg import MapMetaData, OccupancyGrid
 
 from lab_nav.slam import LaserScanData
 
@@ -28,21 +27,6 @@ def scan_data(scan, upside_down):
     sign = -1.0 if upside_down else 1.0
     return LaserScanData(scan.header.stamp.to_sec(), scan.ranges, sign * scan.angle_min,
                          sign * scan.angle_increment, scan.range_min, scan.range_max)
-
-
-def map_metadata(geometry):
-    """MapMetaData of a lab_nav MapGeometry; map_load_time stays 0, as gmapping leaves it."""
-    info = MapMetaData(resolution=geometry.resolution, width=geometry.width, height=geometry.height)
-    info.origin.position.x, info.origin.position.y = geometry.origin_x, geometry.origin_y
-    info.origin.orientation.w = 1.0
-    return info
-
-
-def occupancy_grid(values, geometry, frame_id, stamp):
-    """OccupancyGrid of int8 values [row, col] (-1/0/100) laid out by `geometry`."""
-    grid = OccupancyGrid(info=map_metadata(geometry), data=values.ravel().tolist())
-    grid.header.frame_id, grid.header.stamp = frame_id, stamp
-    return grid
 
 
 def transform_message(pose, parent, child, stamp):

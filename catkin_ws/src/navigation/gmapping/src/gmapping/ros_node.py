@@ -20,7 +20,8 @@ import threading
 import rospy
 import tf2_ros
 from nav_msgs.msg import MapMetaData, OccupancyGrid
-from nav_msgs.srv import GetMap, GetMapResponse
+from nav_msgs.srv import GetMap
+from nav_ros.grids import NumpyGetMapResponse, grid_message
 from sensor_msgs.msg import LaserScan
 from std_msgs.msg import Float64
 
@@ -120,7 +121,7 @@ class SlamNode:
 
     def _publish_map(self):
         values, geometry = self.slam.occupancy()
-        grid = messages.occupancy_grid(values, geometry, self.params.map_frame, rospy.Time.now())
+        grid = grid_message(geometry, values, self.params.map_frame, rospy.Time.now())
         self._map_pub.publish(grid)
         self._metadata_pub.publish(grid.info)
         if self.slam.entropy > 0.0:
@@ -146,7 +147,7 @@ class SlamNode:
             grid = self._last_map
         if grid is None:
             raise rospy.ServiceException("slam_gmapping has no map yet (it makes one from the first scan)")
-        return GetMapResponse(map=grid)
+        return NumpyGetMapResponse(map=grid)
 
 
 def main():

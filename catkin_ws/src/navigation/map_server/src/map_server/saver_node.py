@@ -15,10 +15,10 @@ import threading
 
 import rospy
 from nav_msgs.msg import OccupancyGrid
+from nav_ros.grids import cells_of
 
 from lab_nav.maps.map_saver_files import pgm_bytes, quaternion_yaw, yaml_text
 from map_server.command_line import CommandLineExit, parse_saver_args
-from map_server.messages import message_cells
 from roscpp_console.handler import use_roscpp_console
 from roscpp_console.line_format import error_line
 
@@ -40,7 +40,7 @@ class MapSaver:
         info = message.info
         rospy.loginfo("Received a %d X %d map @ %.3f m/pix", info.width, info.height, info.resolution)
         try:
-            cells = message_cells(message)
+            _geometry, cells = cells_of(message)
         except ValueError as error:
             rospy.logerr("Couldn't save the map: %s", error)
             return

@@ -17,17 +17,19 @@ import time
 
 import rospy
 from nav_msgs.msg import MapMetaData, OccupancyGrid
-from nav_msgs.srv import GetMap, GetMapResponse, LoadMap, LoadMapResponse
+from nav_msgs.srv import GetMap, LoadMap, LoadMapResponse
+from nav_ros.grids import NumpyGetMapResponse, grid_message
+from rospy.numpy_msg import numpy_msg
 
 from lab_nav.maps.errors import MapFileError
 from lab_nav.maps.map_loader import DEPRECATED_DEFAULTS, deprecated_description, load_image_map
 from lab_nav.maps.map_yaml import read_map_yaml
 from map_server.command_line import EXIT_SERVER_ERROR, SERVER_DEPRECATED_WARNING, CommandLineExit, parse_server_args
-from map_server.messages import grid_message
 from roscpp_console.handler import use_roscpp_console
 from roscpp_console.line_format import error_line
 
 VALID_TIME_POLL_S = 0.01   # wall time between looks at the clock while ROS time is still 0
+NumpyLoadMapResponse = numpy_msg(LoadMapResponse)   # carries the numpy map of nav_ros.grids
 
 
 def wait_for_valid_time():
@@ -65,10 +67,11 @@ class MapServer:
     def load_description(self, description):
         rospy.loginfo('Loading map from image "%s"', description.image)
         grid = load_image_map(description)
-        message = grid_message(grid, self._frame_id, wait_for_valid_time())
+        stamp = wait_for_valid_time()
+        message = grid_message(grid.geometry, grid.cells, self._frame_id, stamp, load_time=stamp)
         rospy.loginfo("Read a %d X %d map @ %.3f m/cell", message.info.width, message.info.height,
                       message.info.resolution)
-        self._response = GetMapResponse(map=message)
+        self._response = NumpyGetMapResponse(map=message)
         if not self._services:
             self._services = (rospy.Service("static_map", GetMap, self._static_map),
                               rospy.Service("change_map", LoadMap, self._change_map))
@@ -86,7 +89,7 @@ class MapServer:
             rospy.logerr(str(error))
             return LoadMapResponse(result=LoadMapResponse.RESULT_UNDEFINED_FAILURE)
         rospy.loginfo("Changed map to %s", request.map_url)
-        return LoadMapResponse(map=self._response.map, result=LoadMapResponse.RESULT_SUCCESS)
+        return NumpyLoadMapResponse(map=self._response.map, result=LoadMapResponse.RESULT_SUCCESS)
 
 
 def _first_description(args):

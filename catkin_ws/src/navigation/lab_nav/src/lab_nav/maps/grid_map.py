@@ -23,7 +23,3 @@ class GridMap:
         if self.cells.shape != (self.geometry.height, self.geometry.width):
             raise ValueError("cells have shape {}, the geometry says {} x {} (height x width)".format(
                 self.cells.shape, self.geometry.height, self.geometry.width))
-
-    def data(self):
-        """The cells as OccupancyGrid.data: a flat list of ints, row-major from the origin corner."""
-        return self.cells.astype(np.int8).ravel().tolist()
