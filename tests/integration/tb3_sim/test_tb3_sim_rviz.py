@@ -1,5 +1,6 @@
 """rviz: tb3_sim publishes the world as a latched MarkerArray, and `rviz -d rviz/tb3_sim.rviz` (under a virtual
-display) loads the config and subscribes to the markers, the scan and the camera image."""
+display) loads the config and subscribes to the markers, the scan and the camera image; the mapping and navigation
+courses' configs load and subscribe to every topic their displays show."""
 import os
 
 import pytest
@@ -27,18 +28,42 @@ def test_world_markers_are_latched_and_complete(sim):
     assert (box["pose"]["position"]["x"], box["scale"]["x"]) == (pytest.approx(1.5), pytest.approx(0.4))
 
 
-def rviz_subscribed(master_uri):
-    return all(any(node.startswith("/rviz") for node in subscribers(master_uri, topic))
-               for topic in ["/gazebo/world_markers", "/scan", "/camera/rgb/image_raw"])
+COURSE_CONFIGS = {
+    ("turtlebot3_slam", "turtlebot3_gmapping.rviz"): ["/scan", "/map"],
+    ("turtlebot3_navigation", "turtlebot3_navigation.rviz"): [
+        "/scan", "/map", "/move_base/NavfnROS/plan", "/move_base/global_costmap/costmap",
+        "/move_base/DWAPlannerROS/global_plan", "/move_base/local_costmap/footprint",
+        "/move_base/local_costmap/costmap", "/move_base/DWAPlannerROS/local_plan", "/particlecloud",
+        "/move_base_simple/goal"],
+}
+
+
+def rviz_subscribed(master_uri, topics=("/gazebo/world_markers", "/scan", "/camera/rgb/image_raw")):
+    return all(any(node.startswith("/rviz") for node in subscribers(master_uri, topic)) for topic in topics)
+
+
+def start_rviz(sim, package, config):
+    return sim.start(["env", "-u", "QT_QPA_PLATFORM", "xvfb-run", "-a", "-s", "-screen 0 1024x768x24",
+                      "rviz", "-d", os.path.join(rospkg.RosPack().get_path(package), "rviz", config)], "rviz")
 
 
 def test_rviz_loads_the_config_and_subscribes(sim):
-    config = os.path.join(rospkg.RosPack().get_path("tb3_sim"), "rviz", "tb3_sim.rviz")
-    rviz = sim.start(["env", "-u", "QT_QPA_PLATFORM", "xvfb-run", "-a", "-s", "-screen 0 1024x768x24",
-                      "rviz", "-d", config], "rviz")
+    rviz = start_rviz(sim, "tb3_sim", "tb3_sim.rviz")
     wait_until(lambda: rviz_subscribed(sim.uri) or not rviz.running(), 60, "rviz to subscribe")
     assert rviz.running(), rviz.output()[-2000:]
     assert rviz_subscribed(sim.uri)
+    rviz.stop()
+
+
+@pytest.mark.parametrize("package, config", list(COURSE_CONFIGS))
+def test_the_courses_rviz_configs_load_with_every_display(sim, package, config):
+    """A display missing from the config, or a config rviz cannot read (it would open its default one), leaves
+    one of the topics without rviz as a subscriber."""
+    topics = COURSE_CONFIGS[package, config]
+    rviz = start_rviz(sim, package, config)
+    wait_until(lambda: rviz_subscribed(sim.uri, topics) or not rviz.running(), 60, "rviz to subscribe")
+    assert rviz.running(), rviz.output()[-2000:]
+    rviz.stop()
 
 
 def test_turtlebot3_gazebo_rviz_shows_the_robot_model_with_turning_wheels(sim):
