@@ -45,7 +45,7 @@ def test_explore_maps_turtlebot3_world_hands_off_and_stops(explored):
     explore, probe, clearance = explored
     coverage = exploration.coverage(exploration.current_map(), exploration.world_free_cells())
     assert coverage >= COVERAGE, (coverage, explore.output()[-3000:])
-    assert clearance >= CONTACT_MARGIN_M
+    assert clearance >= CONTACT_MARGIN_M, (clearance, coverage)
     output = explore.output()
     lines = [line.split("]: ", 1)[-1] for line in output.splitlines()]
     assert [line for line in lines if line in START_UP] == list(START_UP)
