@@ -61,15 +61,17 @@ def map_nav_world(master, folder, factor):
     return Path(folder) / "nav_map.yaml"
 
 
-def start_navigation(master, map_yaml, factor):
-    """Step 3; returns a probe subscribed to /move_base/result, started in the new simulator's sim time."""
+def start_navigation(master, map_yaml, factor, topics=()):
+    """Step 3; returns a probe subscribed to /move_base/result and `topics` ((name, type) pairs), started in the
+    new simulator's sim time."""
     _headless(master)
     master.start(["roslaunch", "--wait", str(PART3_LAUNCH), f"map_file:={map_yaml}", "gui:=false",
                   f"real_time_factor:={factor}"], "navigation")
     wait_for_service(master.uri, "/gazebo/get_model_state", STARTUP_TIMEOUT_S)
     wait_for_topic(master.uri, "/move_base/status", STARTUP_TIMEOUT_S)
     probe = master.probe()
-    probe.subscribe("/move_base/result", "move_base_msgs/MoveBaseActionResult")
+    for topic, kind in (("/move_base/result", "move_base_msgs/MoveBaseActionResult"), *topics):
+        probe.subscribe(topic, kind)
     return probe
 
 
@@ -85,7 +87,10 @@ def go_to_zone(master, probe, zone):
         found = []
 
         def answered():
-            found.extend(probe.take("/move_base/result"))
+            # a simple goal's id is the server's, stamped when it came: a result stamped before this goal is
+            # the previous goal's (still running when this one preempted it)
+            found.extend(entry for entry in probe.take("/move_base/result")
+                         if entry["msg"]["status"]["goal_id"]["stamp"] >= start)
             return bool(found) or probe.now() - start > nav_goals.GOAL_TIMEOUT_SIM_S
         wait_until(answered, nav_goals.GOAL_TIMEOUT_SIM_S * 3 + 60, f"move_base's result for zone {zone}",
                    interval_s=0.2)
