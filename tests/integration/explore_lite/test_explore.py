@@ -2,8 +2,9 @@
 static_transform_publisher: the start-up lines, the frontier markers, the goals it sends (the cheapest frontier's
 centroid first), blacklisting of aborted goals and "Exploration stopped." when none is left.
 
-There is no move_base on this branch yet, so the action server is a small rospy SimpleActionServer on
-`move_base` that prints each goal and aborts it: explore's side of the action is real, the robot does not move.
+The action server is a small rospy SimpleActionServer on `move_base` that prints each goal and aborts it, so
+that every goal is blacklisted in turn: explore's side of the action is real, the robot does not move. Exploration
+with the real move_base and gmapping is tests/integration/navigation/test_exploration.py.
 """
 import json
 import re

@@ -49,9 +49,10 @@ def occupied_cells(shapes, geometry=GEOMETRY):
     return occupied
 
 
-def world_cells(world_name, inside_point, geometry=GEOMETRY):
-    """int8 cells (height, width) of the world's map; inside_point (x, y) lies in the free space to keep."""
-    occupied = occupied_cells(load_world(shipped_world_path(world_name)).static_shapes, geometry)
+def world_cells(world_name, inside_point, geometry=GEOMETRY, world_path=None):
+    """int8 cells (height, width) of the map of tb3_sim's world `world_name` (or of the world file at
+    `world_path`); inside_point (x, y) lies in the free space to keep."""
+    occupied = occupied_cells(load_world(world_path or shipped_world_path(world_name)).static_shapes, geometry)
     regions, _ = ndimage.label(~occupied)
     col, row = (int(v) for v in geometry.world_to_cell(*inside_point))
     cells = np.full(occupied.shape, -1, np.int8)

@@ -5,6 +5,7 @@ import pytest
 from lab_nav.costmap.footprint import BURGER_FOOTPRINT, WAFFLE_FOOTPRINT, Footprint, FootprintError
 from lab_nav.costmap.inflation import Inflation
 from lab_nav.costmap.layered import CostmapParams, LayeredCostmap, changed_box
+from lab_nav.costmap.raytrace import cells_along
 from lab_nav.costmap.values import INSCRIBED, LETHAL, NO_INFORMATION, from_map, to_occupancy
 from lab_nav.maps.geometry import MapGeometry
 
@@ -109,3 +110,67 @@ def test_changed_box_bounds_the_differences():
     b[2, 3] = b[5, 7] = 9
     assert changed_box(a, b) == (3, 2, 5, 4)
     assert changed_box(None, b) == (0, 0, 10, 10)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_updates_after_each_scan_give_the_grid_one_update_of_all_of_them_gives(seed):
+    """The incremental update (only around the cells a scan changed) against the whole grid computed at once."""
+    rng = np.random.default_rng(seed)
+    geometry, data = _world_map()
+    stepwise, at_once = LayeredCostmap(geometry, PARAMS), LayeredCostmap(geometry, PARAMS)
+    stepwise.set_map(geometry, data)
+    stepwise.update()
+    at_once.set_map(geometry, data)
+    for _ in range(12):
+        origin = rng.uniform(-1.5, 0.5, 2)
+        ends = origin + rng.uniform(-2.0, 2.0, (30, 2))
+        hit = rng.random(30) < 0.6
+        for costmap in (stepwise, at_once):
+            costmap.add_scan(origin, ends, hit)
+            costmap.clear_footprint(origin[0], origin[1], 0.3)
+        before = stepwise.costs
+        stepwise.update()
+        assert before is stepwise.costs or not np.array_equal(before, stepwise.costs)
+    np.testing.assert_array_equal(stepwise.costs, at_once.update())
+
+
+def test_an_update_with_nothing_changed_keeps_the_grid_and_its_version():
+    geometry, data = _world_map()
+    costmap = LayeredCostmap(geometry, PARAMS)
+    costmap.set_map(geometry, data)
+    costs = costmap.update()
+    version = costmap.version
+    costmap.add_scan((0.0, 0.0), [(1.0, 0.0)], [True])   # the map's wall: marks what the static layer has
+    assert costmap.update() is costs and costmap.version == version
+    costmap.add_scan((0.0, 0.0), [(0.5, 0.0)], [True])
+    assert costmap.update() is not costs and costmap.version == version + 1
+    assert costs[40, 50] != LETHAL   # the array a reader held is never written
+
+
+def test_rays_are_cut_to_the_grid_and_leave_no_gap():
+    geometry = MapGeometry(0.05, 60, 60, -1.5, -1.5)
+    rng = np.random.default_rng(3)
+    for _ in range(50):
+        origin, end = rng.uniform(-3.0, 3.0, 2), rng.uniform(-3.0, 3.0, 2)
+        cols, rows = cells_along(geometry, origin, [end])
+        t = np.linspace(0.0, 1.0, 20000)
+        dense = set(zip(*geometry.world_to_cell(origin[0] + t * (end - origin)[0], origin[1] + t * (end - origin)[1])))
+        dense = {(c, r) for c, r in dense if 0 <= c < 60 and 0 <= r < 60}
+        assert set(zip(cols.tolist(), rows.tolist())) <= dense
+        assert (len(cols) == 0) == (len(dense) == 0)
+        if len(cols):
+            assert np.all(np.abs(np.diff(cols)) <= 1) and np.all(np.abs(np.diff(rows)) <= 1)
+
+
+def test_cost_at_reads_no_information_anywhere_off_the_grid():
+    geometry, data = _world_map()
+    costmap = LayeredCostmap(geometry, PARAMS)
+    costmap.set_map(geometry, data)
+    costmap.update()
+    x = np.array([-2.0, -2.01, 1.99, 2.0, 0.0, 1e9, -1e9, 0.0])
+    y = np.array([-2.0, 0.0, 1.99, 0.0, 1.0, 0.0, 0.0, -7.0])
+    cols, rows = geometry.world_to_cell(x, y)
+    inside = geometry.contains(cols, rows)
+    expected = np.where(inside, costmap.costs[np.clip(rows, 0, 79), np.clip(cols, 0, 79)], NO_INFORMATION)
+    np.testing.assert_array_equal(costmap.cost_at(x, y), expected)
+    assert costmap.cost_at(1.0, 0.0) == LETHAL

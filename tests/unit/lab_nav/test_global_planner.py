@@ -94,3 +94,43 @@ def test_a_goal_in_a_blocked_cell_fails_without_a_search(monkeypatch):
     monkeypatch.setattr(global_planner, "_search", no_search)
     assert plan(costs, (5, 5), (20, 20), 0.05) is None
     assert plan(costs, (5, 5), (20, 17), 0.05) is None
+
+
+def _count_searches(monkeypatch):
+    searches = []
+    real = global_planner._search
+
+    def counted(*args, **kwargs):
+        searches.append(args[3])
+        return real(*args, **kwargs)
+    monkeypatch.setattr(global_planner, "_search", counted)
+    return searches
+
+
+def test_replanning_on_the_same_costmap_and_goal_walks_the_kept_potential(monkeypatch):
+    rng = np.random.default_rng(7)
+    costs = rng.choice([0, 0, 0, 40, 120, LETHAL], size=(120, 120)).astype(np.uint8)
+    costs[10, 10] = costs[100, 100] = 0
+    searches = _count_searches(monkeypatch)
+    navfn = global_planner.Navfn()
+    first = navfn.plan(costs, (10, 10), (100, 100), 0.05)
+    later = first[len(first) // 2]
+    again = navfn.plan(costs, later, (100, 100), 0.05)
+    assert len(searches) == 1
+    assert path_cost(costs, again) == pytest.approx(_reference_cost(costs, later, (100, 100)))
+    changed = costs.copy()
+    navfn.plan(changed, later, (100, 100), 0.05)   # a new costmap array: a new search
+    navfn.plan(changed, later, (10, 10), 0.05)     # a new goal: a new search
+    assert len(searches) == 3
+
+
+def test_a_start_beyond_the_kept_window_widens_it():
+    costs = np.zeros((300, 300), np.uint8)
+    navfn = global_planner.Navfn()
+    navfn.plan(costs, (150, 150), (160, 150), 0.05)
+    window = navfn._kept[3]
+    path = navfn.plan(costs, (150, 20), (160, 150), 0.05)
+    assert path[0] == (150, 20) and path[-1] == (160, 150)
+    assert path_cost(costs, path) == pytest.approx(_reference_cost(costs, (150, 20), (160, 150)))
+    widened = navfn._kept[3]
+    assert widened[0] < window[0] and widened[1:] == window[1:]

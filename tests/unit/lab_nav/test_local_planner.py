@@ -4,7 +4,7 @@ import pytest
 
 from lab_nav.costmap.footprint import WAFFLE_FOOTPRINT, Footprint
 from lab_nav.costmap.layered import CostmapParams, LayeredCostmap
-from lab_nav.costmap.values import INSCRIBED, LETHAL
+from lab_nav.costmap.values import INSCRIBED
 from lab_nav.maps.geometry import MapGeometry
 from lab_nav.planning.local_planner import DwaParams, DwaPlanner
 
@@ -100,7 +100,7 @@ def test_a_lethal_cell_in_the_rotation_blocks_it():
     start, turned = np.array([[[0.0, 0.0, 0.0]]]), np.array([[[0.0, 0.0, 0.5]]])
     for col, row in ((c, r) for c in range(20, 40) for r in range(20, 40)):
         costmap = _local_costmap()
-        costmap._obstacles[row, col] = LETHAL
+        costmap.add_scan((0.0, 0.0), [costmap.geometry.cell_center(col, row)], [True], clear=False)
         costmap.update()
         if planner.footprint_costs(turned, costmap)[1].any() and not planner.footprint_costs(start, costmap)[1].any():
             break
@@ -119,3 +119,22 @@ def test_a_robot_facing_across_its_plan_does_not_back_away_from_it():
     command = planner.compute((0.0, 0.0, np.pi / 2), (0.0, 0.0), _local_costmap())
     end = command.trajectory[-1]
     assert np.hypot(end[0] - goal[0], end[1] - goal[1]) < 1.2
+
+
+def test_footprint_costs_are_the_outline_and_centre_cells_of_each_pose():
+    """The planner's one lookup of every point against a pose-by-pose reference: the outline's and centre's cells
+    (off the costmap: no information, a collision)."""
+    rng = np.random.default_rng(11)
+    costmap = _local_costmap(rng.uniform(-1.4, 1.4, size=(30, 2)))
+    planner = DwaPlanner(PARAMS, FOOTPRINT)
+    poses = np.column_stack((rng.uniform(-1.8, 1.8, 60), rng.uniform(-1.8, 1.8, 60), rng.uniform(-4, 4, 60)))
+    highest, collides = planner.footprint_costs(poses.reshape(6, 10, 3), costmap)
+    g = costmap.geometry
+    for pose, cost, hit in zip(poses, highest.ravel(), collides.ravel()):
+        outline = FOOTPRINT.outline(0.1)
+        c, s = np.cos(pose[2]), np.sin(pose[2])
+        points = np.vstack((pose[:2], pose[:2] + outline @ np.array([[c, s], [-s, c]])))
+        cols, rows = g.world_to_cell(points[:, 0], points[:, 1])
+        values = [int(costmap.costs[r, cc]) if g.contains(cc, r) else 255 for cc, r in zip(cols, rows)]
+        assert cost == max(values)
+        assert hit == (values[0] >= INSCRIBED or max(values[1:]) >= 254)

@@ -24,6 +24,7 @@ import actionlib
 import numpy as np
 import rospy
 import tf2_ros
+from actionlib import CommState
 from actionlib_msgs.msg import GoalStatus
 from map_msgs.msg import OccupancyGridUpdate
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
@@ -170,7 +171,9 @@ class Explore:
         self._costmap.wait_for_transform()
         self._markers = (rospy.Publisher("~frontiers", MarkerArray, queue_size=10) if params["visualize"]
                          else None)
-        self._move_base = actionlib.SimpleActionClient("move_base", MoveBaseAction)
+        self._goal = None   # the handle of the goal last sent; the others' transitions are ignored
+        self._goal_lock = threading.Lock()
+        self._move_base = actionlib.ActionClient("move_base", MoveBaseAction)
         rospy.loginfo("Waiting to connect to move_base server")
         while not self._move_base.wait_for_server(rospy.Duration(1.0)):
             if rospy.is_shutdown():
@@ -217,7 +220,20 @@ class Explore:
         goal.target_pose.header.stamp = rospy.Time.now()
         goal.target_pose.pose.position.x, goal.target_pose.pose.position.y = target
         goal.target_pose.pose.orientation.w = 1.0
-        self._move_base.send_goal(goal, done_cb=lambda status, _result: self._goal_ended(status, target))
+        with self._goal_lock:
+            self._goal = self._move_base.send_goal(
+                goal, transition_cb=lambda handle: self._transition(handle, target))
+
+    def _transition(self, handle, target):
+        """A goal's state changed. Only the goal last sent counts, as with the original's SimpleActionClient,
+        which forgets the previous goal when it sends a new one. (rospy's SimpleActionClient logs an ERROR "Got a
+        transition callback on a goal handle that we're not tracking" when the previous goal's status arrives in
+        another thread while the new goal is sent; the C++ client runs its callbacks in one thread.)"""
+        with self._goal_lock:
+            if handle != self._goal or handle.get_comm_state() != CommState.DONE:
+                return
+            self._goal = None
+        self._goal_ended(handle.get_goal_status(), target)
 
     def _goal_ended(self, status, target):
         debug("Reached goal with status: %s", STATUS_NAMES.get(status, status))

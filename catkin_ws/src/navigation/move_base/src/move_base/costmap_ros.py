@@ -7,13 +7,14 @@ Topics under ~<name>/ (e.g. /move_base/global_costmap/):
 - `costmap_updates` (map_msgs/OccupancyGridUpdate): otherwise, at publish_frequency and only while someone
   subscribes to `costmap`, the bounding box of the cells that changed.
 - `footprint` (geometry_msgs/PolygonStamped): the padded footprint at the robot's pose, in the global frame, on
-  every update.
+  every update (built only while someone subscribes).
 Values are translated 0 -> 0, 1-252 -> 1-98, 253 -> 99, 254 -> 100, 255 -> -1.
 
 The static layer (global costmap) subscribes to `map` and resizes the costmap to each map's geometry. Laser
 scans are projected into the global frame at their stamp (dropped when TF is not available within
 transform_tolerance); +inf readings neither mark nor clear, readings at range_max clear only. The robot pose
-is TF global_frame -> robot_base_frame.
+is TF global_frame -> robot_base_frame. An update recomputes only the cells its scans changed (lab_nav's
+LayeredCostmap), so scans that see what the map already has cost a comparison of their window.
 """
 import threading
 
@@ -201,6 +202,8 @@ class CostmapRos:
         with self.lock:
             geometry, costs = self.costmap.geometry, self.costmap.costs
         previous = self._published
+        if previous is not None and previous[1] is costs:
+            return
         self._published = (geometry, costs)
         if previous is None or previous[0] != geometry:
             message = grids.grid_message(geometry, to_occupancy(costs), self.config.global_frame, rospy.Time.now())
@@ -217,6 +220,8 @@ class CostmapRos:
         publish_unless_shut_down(self._update_pub.publish, update)
 
     def _publish_footprint(self, pose):
+        if not self._footprint_pub.get_num_connections():
+            return
         message = PolygonStamped()
         message.header.frame_id, message.header.stamp = self.config.global_frame, rospy.Time.now()
         message.polygon.points = [Point32(x, y, 0.0) for x, y in self.config.params.footprint.placed(*pose)]

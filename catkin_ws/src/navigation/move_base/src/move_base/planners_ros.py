@@ -1,11 +1,13 @@
 """The planners' ROS side (imports rospy): NavfnROS's plan topic and make_plan service, DWAPlannerROS's plans.
 
-NavfnROS plans on the global costmap from the robot's cell to the goal's (lab_nav.planning.global_planner)
-and publishes every attempt on ~NavfnROS/plan (nav_msgs/Path in the costmap's frame; empty when planning
-failed): cell centres with identity orientation, the goal with its own pose last. Goals and starts must be
-in the costmap's frame (the original's ERROR otherwise). DWAPlannerROS publishes the part of the global plan it
-follows (~DWAPlannerROS/global_plan) and the chosen trajectory (~DWAPlannerROS/local_plan, empty when none is
-valid), both in the local costmap's frame (odom).
+NavfnROS plans on the global costmap from the robot's cell to the goal's (lab_nav.planning.global_planner,
+whose goal potential is kept while the costmap does not change) and publishes every attempt on ~NavfnROS/plan
+(nav_msgs/Path in the costmap's frame; empty when planning failed): cell centres with identity orientation, the
+goal with its own pose last. Goals and starts must be in the costmap's frame (the original's ERROR otherwise).
+DWAPlannerROS publishes the part of the global plan it follows (~DWAPlannerROS/global_plan) and the chosen
+trajectory (~DWAPlannerROS/local_plan, empty when none is valid), both in the local costmap's frame (odom).
+A path message is built only while someone subscribes: at 10 Hz, a few hundred poses of genpy objects cost
+move_base more than the planners' own arithmetic.
 """
 import numpy as np
 import rospy
@@ -40,6 +42,7 @@ class NavfnRos:
         self.costmap = costmap
         self.allow_unknown = read("NavfnROS/allow_unknown", True, bool)
         self.default_tolerance = read("NavfnROS/default_tolerance", 0.0)
+        self._navfn = global_planner.Navfn()
         self._plan_pub = rospy.Publisher("~NavfnROS/plan", Path, queue_size=1)
 
     @property
@@ -66,8 +69,8 @@ class NavfnRos:
             rospy.logwarn("The robot's start position is off the global costmap. Planning will always fail, are "
                           "you sure the robot has been properly localized?")
             return None
-        cells = global_planner.plan(costs, start_cell, goal_cell, geometry.resolution, self.allow_unknown,
-                                    int(round(tolerance / geometry.resolution)))
+        cells = self._navfn.plan(costs, start_cell, goal_cell, geometry.resolution, self.allow_unknown,
+                                 int(round(tolerance / geometry.resolution)))
         if cells is None:
             return None
         x, y = geometry.cell_center([c for c, _ in cells], [r for _, r in cells])
@@ -78,8 +81,9 @@ class NavfnRos:
         return points
 
     def publish(self, points, goal):
-        publish_unless_shut_down(self._plan_pub.publish, path_message(
-            self.frame, rospy.Time.now(), points if points is not None else [], goal))
+        if self._plan_pub.get_num_connections():
+            publish_unless_shut_down(self._plan_pub.publish, path_message(
+                self.frame, rospy.Time.now(), points if points is not None else [], goal))
 
 
 class DwaRos:
@@ -89,5 +93,6 @@ class DwaRos:
 
     def publish(self, frame, plan_points, trajectory):
         stamp = rospy.Time.now()
-        publish_unless_shut_down(self._global_pub.publish, path_message(frame, stamp, plan_points))
-        publish_unless_shut_down(self._local_pub.publish, path_message(frame, stamp, trajectory))
+        for publisher, points in ((self._global_pub, plan_points), (self._local_pub, trajectory)):
+            if publisher.get_num_connections():
+                publish_unless_shut_down(publisher.publish, path_message(frame, stamp, points))

@@ -3,13 +3,16 @@
 cost(d) = 254 at a lethal cell, 253 for d <= inscribed radius, floor(252 * exp(-cost_scaling_factor *
 (d - inscribed radius))) for d <= inflation_radius, else 0 (d in m between cell centres), as costmap_2d's
 InflationLayer computes it. Distances come from one Euclidean distance transform over the lethal cells' bounding
-box grown by the inflation radius: cells outside it are farther than the radius from every lethal cell.
+box grown by the inflation radius: cells outside it are farther than the radius from every lethal cell. A part of
+the grid (a box) needs only the lethal cells within the radius of it, so a costmap update that changed a few cells
+recomputes their neighbourhood only, as costmap_2d's inflation layer does within its update bounds.
 """
 from dataclasses import dataclass
 
 import numpy as np
 from scipy import ndimage
 
+from . import cell_box
 from .values import FREE, INSCRIBED, LETHAL, MAX_INFLATED, NO_INFORMATION
 
 
@@ -29,17 +32,28 @@ class Inflation:
         cost = np.where(d <= self.inscribed_radius, INSCRIBED, cost)
         return np.where(d <= 0.0, LETHAL, cost).astype(np.uint8)
 
-    def costs(self, lethal, resolution):
-        """uint8 inflation costs of a grid whose True cells in the boolean array `lethal` are obstacles."""
-        out = np.zeros(lethal.shape, dtype=np.uint8)
-        rows, cols = np.nonzero(lethal)
+    def margin_cells(self, resolution):
+        """How many cells around a changed lethal cell its inflation can reach (the radius, and one cell more)."""
+        return int(np.ceil(self.inflation_radius / resolution)) + 1
+
+    def costs(self, lethal, resolution, box=None):
+        """uint8 inflation costs of the cells in `box` (cell_box; the whole grid when None) of a grid whose True
+        cells in the boolean array `lethal` are obstacles."""
+        shape = lethal.shape
+        box = box or (0, shape[0], 0, shape[1])
+        out = np.zeros((box[1] - box[0], box[3] - box[2]), dtype=np.uint8)
+        margin = self.margin_cells(resolution)
+        near = cell_box.grown(box, margin, shape)
+        rows, cols = np.nonzero(lethal[cell_box.slices(near)])
         if rows.size == 0:
             return out
-        margin = int(np.ceil(self.inflation_radius / resolution)) + 1
-        r0, r1 = max(rows.min() - margin, 0), min(rows.max() + margin + 1, lethal.shape[0])
-        c0, c1 = max(cols.min() - margin, 0), min(cols.max() + margin + 1, lethal.shape[1])
-        distance = ndimage.distance_transform_edt(~lethal[r0:r1, c0:c1]) * resolution
-        out[r0:r1, c0:c1] = self.cost_at(distance)
+        reach = cell_box.grown(cell_box.of_cells(rows + near[0], cols + near[2]), margin, shape)
+        region = cell_box.intersection(reach, near)
+        inner = cell_box.intersection(region, box)
+        if inner is None:
+            return out
+        distance = ndimage.distance_transform_edt(~lethal[cell_box.slices(region)]) * resolution
+        out[cell_box.slices(inner, box)] = self.cost_at(distance[cell_box.slices(inner, region)])
         return out
 
 

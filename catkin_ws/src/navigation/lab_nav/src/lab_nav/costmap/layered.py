@@ -7,6 +7,13 @@ The master grid is the static layer, then the obstacle layer by maximum (which a
 obstacle layer's 0: the published turtlebot3 costmaps have no unknown cells), then inflation around every 254
 cell. A rolling window (the local costmap) keeps its obstacle marks in place in the world when it moves.
 
+As costmap_2d does with its layers' update bounds, an update recomputes only what changed: the layers' inputs
+since the last update record the box of cells they touched, the update compares the combined grid there with the
+last one and re-inflates only around the lethal cells that appeared or went (a scan that marks what the map
+already has changes nothing and costs one comparison of its window). A new map, a move of the rolling window,
+reset and clear_outside recompute the whole grid. `costs` is replaced, never written in place, so a reader holding
+the previous array (a planner, a publisher) keeps a consistent snapshot; `version` counts the changes.
+
 Grids are (height, width) uint8 arrays indexed [row, col]; positions are metres in the costmap's global frame.
 """
 from dataclasses import dataclass
@@ -14,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..maps.geometry import MapGeometry
+from . import cell_box
 from . import inflation as inflation_layer
 from .footprint import Footprint
 from .inflation import Inflation
@@ -40,6 +48,9 @@ class CostmapParams:
         return Inflation(self.footprint.inscribed_radius, self.inflation_radius, self.cost_scaling_factor)
 
 
+_WHOLE = "whole grid"
+
+
 class LayeredCostmap:
     """The master grid of one costmap and its layers. `layers` names them, in order."""
 
@@ -47,9 +58,20 @@ class LayeredCostmap:
         self.params = params
         self.geometry = geometry
         self.layers = ((STATIC_LAYER,) if static else ()) + (OBSTACLE_LAYER, INFLATION_LAYER)
+        self._inflation = params.inflation
         self._static = None
         self._obstacles = np.zeros((geometry.height, geometry.width), dtype=np.uint8)
+        self._master = self._obstacles.copy()
+        self._inflated = self._obstacles.copy()
         self.costs = np.zeros_like(self._obstacles)
+        self.version = 0
+        self._dirty = _WHOLE
+        self._framed = None
+
+    def _touched(self, box):
+        """Record that the layers may have changed in `box` (a cell_box; _WHOLE for the whole grid)."""
+        if self._dirty is not _WHOLE:
+            self._dirty = _WHOLE if box is _WHOLE else cell_box.union(self._dirty, box)
 
     # --- layer inputs -------------------------------------------------------------------------------------
     def set_map(self, geometry, occupancy):
@@ -61,6 +83,7 @@ class LayeredCostmap:
             self.geometry = geometry
             self._obstacles = np.zeros((geometry.height, geometry.width), dtype=np.uint8)
         self._static = from_map(data)
+        self._touched(_WHOLE)
 
     def move_to(self, x, y):
         """Centre a rolling window on (x, y): the origin snaps to whole cells; marks keep their world place."""
@@ -82,6 +105,7 @@ class LayeredCostmap:
             moved[dst_r, dst_c] = self._obstacles[src_r, src_c]
         self._obstacles = moved
         self.geometry = new
+        self._touched(_WHOLE)
 
     def add_scan(self, sensor_xy, ends_xy, hit, clear=True):
         """Clear along each ray (cut to raytrace_range; unless clear is False) and mark the hits within
@@ -98,15 +122,18 @@ class LayeredCostmap:
         if clear:
             cols, rows = cells_along(self.geometry, origin, origin + offsets * scale[:, None])
             self._obstacles[rows, cols] = FREE
+            self._touched(cell_box.of_cells(rows, cols))
         marking = np.asarray(hit, bool) & (lengths < self.params.obstacle_range)
         cols, rows = self.geometry.world_to_cell(ends[marking, 0], ends[marking, 1])
         inside = self.geometry.contains(cols, rows)
         self._obstacles[rows[inside], cols[inside]] = LETHAL
+        self._touched(cell_box.of_cells(rows[inside], cols[inside]))
 
     def clear_footprint(self, x, y, yaw):
         """Free the obstacle layer's cells whose centres lie inside the footprint at (x, y, yaw)."""
         cols, rows = self.cells_inside(self.params.footprint.placed(x, y, yaw))
         self._obstacles[rows, cols] = FREE
+        self._touched(cell_box.of_cells(rows, cols))
 
     def cells_inside(self, polygon):
         """(cols, rows) of the in-grid cells whose centres lie inside a convex polygon (K, 2) in m."""
@@ -125,6 +152,7 @@ class LayeredCostmap:
     def reset(self):
         """Erase every obstacle mark (clear_costmaps); the static layer keeps its map."""
         self._obstacles[:] = FREE
+        self._touched(_WHOLE)
 
     def clear_outside(self, x, y, size, layer_names):
         """clear_costmap_recovery: reset the named layers' cells outside a size x size m square centred on
@@ -136,29 +164,65 @@ class LayeredCostmap:
         px, py = g.cell_center(np.arange(g.width), np.arange(g.height))
         keep = (np.abs(py - y)[:, None] <= size / 2) & (np.abs(px - x)[None, :] <= size / 2)
         self._obstacles[~keep] = FREE
+        self._touched(_WHOLE)
 
     # --- the master grid ----------------------------------------------------------------------------------
     def update(self):
-        """Recompute the master grid from the layers; returns it."""
-        if self._static is not None:
-            master = self._static.copy()
-            unknown = master == NO_INFORMATION
-            master = np.maximum(master, self._obstacles)
-            master[unknown] = self._obstacles[unknown]
-        else:
-            master = self._obstacles.copy()
-        inflated = self.params.inflation.costs(master == LETHAL, self.geometry.resolution)
-        self.costs = inflation_layer.apply(master, inflated)
+        """Recompute the master grid where the layers changed since the last update; returns it."""
+        dirty, self._dirty = self._dirty, None
+        if dirty is _WHOLE:
+            self._master = self._combined()
+            self._inflated = self._inflation.costs(self._master == LETHAL, self.geometry.resolution)
+            self.costs = inflation_layer.apply(self._master, self._inflated)
+            self.version += 1
+        elif dirty is not None:
+            self._update_within(dirty)
         return self.costs
 
-    def cost_at(self, x, y):
-        """Master cost (int array) at world points; NO_INFORMATION outside the grid."""
-        cols, rows = self.geometry.world_to_cell(x, y)
-        inside = self.geometry.contains(cols, rows)
-        out = np.full(np.shape(cols), NO_INFORMATION, dtype=np.int32)
-        out[inside] = self.costs[rows[inside], cols[inside]]
-        return out
+    def _combined(self, box=None):
+        """The static and obstacle layers combined (before inflation), in `box` (the whole grid when None)."""
+        index = cell_box.slices(box) if box is not None else (slice(None), slice(None))
+        obstacles = self._obstacles[index]
+        if self._static is None:
+            return obstacles.copy()
+        master = np.maximum(self._static[index], obstacles)
+        unknown = self._static[index] == NO_INFORMATION
+        master[unknown] = obstacles[unknown]
+        return master
 
+    def _update_within(self, box):
+        old, new = self._master[cell_box.slices(box)], self._combined(box)
+        changed = cell_box.of_mask(old != new, box)
+        if changed is None:
+            return
+        lethal_changed = cell_box.of_mask((old == LETHAL) != (new == LETHAL), box)
+        self._master[cell_box.slices(box)] = new
+        if lethal_changed is not None:
+            around = cell_box.grown(lethal_changed, self._inflation.margin_cells(self.geometry.resolution),
+                                    self._master.shape)
+            self._inflated[cell_box.slices(around)] = self._inflation.costs(
+                self._master == LETHAL, self.geometry.resolution, around)
+            changed = cell_box.union(changed, around)
+        costs = self.costs.copy()
+        index = cell_box.slices(changed)
+        costs[index] = inflation_layer.apply(self._master[index], self._inflated[index])
+        self.costs = costs
+        self.version += 1
+
+    def cost_at(self, x, y):
+        """Master cost (uint8 array) at world points; NO_INFORMATION outside the grid.
+
+        One lookup in the grid framed by a border of NO_INFORMATION cells: indices are clipped onto the border,
+        so a point anywhere outside reads 255 without a mask (the local planner looks up ~10^5 points a cycle).
+        """
+        g = self.geometry
+        if self._framed is None or self._framed[0] is not self.costs:
+            framed = np.full((g.height + 2, g.width + 2), NO_INFORMATION, dtype=np.uint8)
+            framed[1:-1, 1:-1] = self.costs
+            self._framed = (self.costs, framed.ravel())
+        col = np.clip(np.floor((np.asarray(x, dtype=float) - g.origin_x) / g.resolution) + 1, 0, g.width + 1)
+        row = np.clip(np.floor((np.asarray(y, dtype=float) - g.origin_y) / g.resolution) + 1, 0, g.height + 1)
+        return self._framed[1][row.astype(np.intp) * (g.width + 2) + col.astype(np.intp)]
 
 def changed_box(old, new):
     """(col, row, width, height) of the smallest box holding every cell that differs, or None when none does."""

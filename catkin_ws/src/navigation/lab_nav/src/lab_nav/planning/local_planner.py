@@ -30,6 +30,7 @@ Poses are (x, y, yaw) in m and rad in the local costmap's frame (odom); velociti
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.spatial import cKDTree
 
 from ..angles import normalize
 from ..costmap.values import INSCRIBED, LETHAL
@@ -90,7 +91,7 @@ class DwaPlanner:
 
     def __init__(self, params, footprint):
         self.params = params
-        self._outline = footprint.outline(FOOTPRINT_OUTLINE_STEP_M)
+        self._points = np.vstack(([0.0, 0.0], footprint.outline(FOOTPRINT_OUTLINE_STEP_M)))   # centre first
         self._plan = np.zeros((0, 2))
         self._goal = None
 
@@ -139,15 +140,13 @@ class DwaPlanner:
         return np.stack((x, y, th), axis=-1)
 
     def footprint_costs(self, poses, costmap):
-        """(M, K) highest cost under the footprint outline at each pose, and whether the pose collides."""
+        """(M, K) highest cost under the footprint outline at each pose, and whether the pose collides (its
+        centre on an inscribed cell or the outline on a lethal one): one costmap lookup of every point."""
         c, s = np.cos(poses[..., 2])[..., None], np.sin(poses[..., 2])[..., None]
-        ox, oy = self._outline[:, 0], self._outline[:, 1]
-        px = poses[..., 0, None] + c * ox - s * oy
-        py = poses[..., 1, None] + s * ox + c * oy
-        outline = costmap.cost_at(px, py)
-        centre = costmap.cost_at(poses[..., 0], poses[..., 1])
-        collides = (centre >= INSCRIBED) | np.any(outline >= LETHAL, axis=-1)
-        return np.maximum(outline.max(axis=-1), centre), collides
+        ox, oy = self._points[:, 0], self._points[:, 1]
+        costs = costmap.cost_at(poses[..., 0, None] + c * ox - s * oy, poses[..., 1, None] + s * ox + c * oy)
+        centre, outline = costs[..., 0], costs[..., 1:].max(axis=-1)
+        return np.maximum(outline, centre), (centre >= INSCRIBED) | (outline >= LETHAL)
 
     # --- scoring ------------------------------------------------------------------------------------------
     def _local_plan(self, costmap):
@@ -169,15 +168,16 @@ class DwaPlanner:
             return _failed()
         plan = self._local_plan(costmap)
         local_goal = plan[-1]
+        to_plan = cKDTree(plan)   # distances to the nearest plan point
         ends = trajectories[:, -1, :]
-        path_cost = _distance_to(ends[:, :2], plan)
+        path_cost = to_plan.query(ends[:, :2])[0]
         goal_cost = np.min(np.linalg.norm(trajectories[..., :2] - local_goal, axis=-1), axis=1)
         total = p.path_distance_bias * path_cost + p.goal_distance_bias * goal_cost + \
             p.occdist_scale * occ.max(axis=1)
         if np.hypot(pose[0] - self._goal[0], pose[1] - self._goal[1]) > p.forward_point_distance:
             ahead = p.forward_point_distance * np.where(commands[:, 0] < 0.0, -1.0, 1.0)[:, None]
             forward = ends[:, :2] + ahead * np.column_stack((np.cos(ends[:, 2]), np.sin(ends[:, 2])))
-            total = total + p.path_distance_bias * _distance_to(forward, plan)
+            total = total + p.path_distance_bias * to_plan.query(forward)[0]
         total[~valid] = np.inf
         best = int(np.argmin(total))
         return Command(float(commands[best, 0]), float(commands[best, 1]), trajectories[best])
@@ -201,8 +201,3 @@ class DwaPlanner:
             return _failed()
         return Command(0.0, w, turn)
 
-
-def _distance_to(points, polyline_points):
-    """(M,) distance in m of each point to the nearest of the plan's points."""
-    diff = points[:, None, :] - polyline_points[None, :, :]
-    return np.sqrt(np.min(np.sum(diff * diff, axis=-1), axis=1))
