@@ -235,7 +235,7 @@ class SubmissionGrader:
             return MASTER_READY_SERVICE, out_dir / "roscore.log"
         box.start_trusted(["roslaunch", "--wait", "tb3_sim", "tb3_sim.launch", "gui:=false",
                            "world:=" + self.suite.world, "real_time_factor:={:g}".format(self.real_time_factor),
-                           "ground_truth_socket:={}".format(truth_socket)],
+                           "ground_truth_socket:={}".format(truth_socket)] + self.suite.launch_args(),
                           self.env, out_dir / "simulator.log")
         return SIMULATOR_READY_SERVICE, out_dir / "simulator.log"
 

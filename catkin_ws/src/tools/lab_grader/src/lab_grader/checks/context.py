@@ -30,7 +30,9 @@ the student's nodes. It
   master knows topic types by name only, so the name is what is compared; the client's md5sum check on
   connecting rejects a look-alike of another layout;
 - sends one graded goal (`observe_action`): records every feedback message, cancels the goal `cancel_after_s`
-  after sending it if asked, and waits at most `timeout_s` for it to end, all in ROS time.
+  after sending it if asked, and waits at most `timeout_s` for it to end, all in ROS time; with a robot it also
+  records the true motion from before the goal until `settle_s` after its end, the front distance once still if
+  asked, and the interference meanwhile, as `observe` does for a call.
 
 A suite without a world has no robot (`robot=False`): no /odom, /scan or /cmd_vel, nothing to reset, ROS time is
 wall time, and observations carry no samples.
@@ -543,9 +545,25 @@ class GradingContext:
             made = self._action_clients[action.found] = (client, recorder)
         return made
 
-    def observe_action(self, action: FoundService, goal_fields, timeout_s, cancel_after_s=None):
+    def observe_action(self, action: FoundService, goal_fields, timeout_s, cancel_after_s=None, settle_s=0.0,
+                       measure_front=False):
         """Send one goal with `goal_fields` to `action.found` and record how it went (an ActionObservation)."""
         client, recorder = self._action_client(action)
+        origin, recording = (self._truth.latest, self._truth.mark()) if self.robot else (None, None)
+
+        def robot_record(ended_s):
+            """The samples, front distance and interference of the goal (nothing without a robot)."""
+            if not self.robot:
+                return {}
+            front = {}
+            if ended_s is not None:
+                self._wait_sim(ended_s + settle_s)
+                if measure_front:
+                    front = dict(front_distance_m=self._truth.request("front_distance")["front_m"],
+                                 front_measured=True)
+            samples = ((origin,) if origin is not None else ()) + self._truth.since(recording).samples
+            return dict(front, samples=samples, interference=tuple(self._findings()))
+
         try:
             goal = action_message_class(action.expected_type, "Goal")(**goal_fields)
         except (AttributeError, TypeError) as error:
@@ -571,10 +589,10 @@ class GradingContext:
         if not self._wait_sim(sent_s + timeout_s, ended.is_set):
             client.cancel_goal()
             return ActionObservation(dict(goal_fields), None, "", None, feedback(), sent_s, cancelled_s, None,
-                                     error="no result within {:g} s".format(timeout_s))
+                                     error="no result within {:g} s".format(timeout_s), **robot_record(None))
         return ActionObservation(dict(goal_fields), STATE_NAMES.get(outcome["state"], str(outcome["state"])),
                                  client.get_goal_status_text() or "", outcome["result"], feedback(), sent_s,
-                                 cancelled_s, outcome["ended_s"])
+                                 cancelled_s, outcome["ended_s"], **robot_record(outcome["ended_s"]))
 
     def shutdown(self):
         """Stop the robot, close the ground-truth channel and leave the graph (abandoned call threads die with the

@@ -45,7 +45,7 @@ def not_run_evidence(check):
 
 def run_one(check, suite, context, found) -> Verdict:
     if check.action is not None:
-        return action_checks.run_action_check(check, context, found.get(check.action))
+        return action_checks.run_action_check(check, suite, context, found.get(check.action))
     return service_checks.run_check(check, suite, context, found.get(check.service))
 
 
