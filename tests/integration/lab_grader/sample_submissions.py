@@ -85,8 +85,11 @@ MISTAKES = {
 PART5_MISTAKES = {
     # name: {file in week5_actions: [(text in the reference, what the student wrote instead)]}
     "part5_reference": {},
-    # The Search server sends no feedback, and after its result it "keeps searching": the robot drives on.
-    "part5_careless": {"nodes/search_server.py": [
+    # The sweep writes the message's format text instead of the image; the Search server sends no feedback, and
+    # after its result it "keeps searching": the robot drives on.
+    "part5_careless": {"nodes/action_server.py": [
+        ("        self.save(image_message, path)\n", "        path.write_text(image_message.format)\n")],
+                       "nodes/search_server.py": [
         ("                self.server.publish_feedback(SearchFeedback(travelled))\n", ""),
         ("        self.server.publish_feedback(SearchFeedback(result.total_distance_travelled))\n", ""),
         ("            rospy.loginfo(text)\n", "            rospy.loginfo(text)\n"

@@ -12,9 +12,9 @@ string), the older message packages (tuos_ros_msgs, com2009_msgs), its own file 
 approach_object_server.py) and Parts 1 and 2 both on /move_service. A marker gives both full marks; the grader's
 verdicts, check by check, are stated in the tests at the end (they share the class's grade run: a run of their own
 graded the reference a second time).
-Part 5 (suites/part5.yaml): the lab's week5_actions (CameraSweep and Search) scores full marks, and a Search server
-that sends no feedback and drives on after its result fails those two checks only; both are graded at once, in
-one grade run of their own after the Week 4 class."""
+Part 5 (suites/part5.yaml): the lab's week5_actions (CameraSweep and Search) scores full marks, and a package whose
+sweep saves files that are not images and whose Search server sends no feedback and drives on after its result
+fails those three checks only; both are graded at once, in one grade run of their own after the Week 4 class."""
 import csv
 import json
 import os
@@ -333,6 +333,7 @@ def test_part5_the_references_score_full_marks_measured_from_ground_truth(graded
     checks = by_id(result)
     assert 85 < checks["sweep_90_4"]["evidence"]["motion"]["turn_deg"] < 95
     assert [fields["current_image"] for _, fields in checks["sweep_90_4"]["evidence"]["feedback"]] == [1, 2, 3, 4]
+    assert checks["sweep_90_4"]["evidence"]["images"]["decodable"] == 4
     assert abs(checks["search_stops_at_distance"]["evidence"]["front_distance_m"] - 0.4) < 0.03
     assert abs(checks["search_stops_at_distance"]["evidence"]["motion"]["mean_speed_mps"] - 0.1) < 0.01
     assert {node["exercise"]: node["found_by"] for node in result["nodes"]} == dict.fromkeys(
@@ -340,9 +341,12 @@ def test_part5_the_references_score_full_marks_measured_from_ground_truth(graded
 
 
 @pytest.mark.slow
-def test_part5_a_search_server_that_drives_on_and_sends_no_feedback_fails_those_checks(graded_part5):
+def test_part5_unreadable_images_no_feedback_and_driving_on_fail_those_checks(graded_part5):
     result = graded_part5["part5_careless"]
     checks = by_id(result)
+    sweep = checks["sweep_90_4"]
+    assert sweep["verdict"] == "fail", sweep
+    assert sweep["reason"].endswith("it holds 4 image files, 0 of them decodable"), sweep["reason"]
     stops = checks["search_stops_at_distance"]
     assert stops["verdict"] == "fail", stops
     assert "expected the robot to be still" in stops["reason"] and "it was moving" in stops["reason"], stops["reason"]
@@ -350,5 +354,5 @@ def test_part5_a_search_server_that_drives_on_and_sends_no_feedback_fails_those_
     feedback = checks["search_feedback_and_result"]
     assert feedback["verdict"] == "fail", feedback
     assert "expected at least 3 feedback messages, it sent 0" in feedback["reason"], feedback["reason"]
-    others_pass(result, "search_stops_at_distance", "search_feedback_and_result")
-    assert result["score"] == 60
+    others_pass(result, "sweep_90_4", "search_stops_at_distance", "search_feedback_and_result")
+    assert result["score"] == 35

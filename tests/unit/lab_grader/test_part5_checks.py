@@ -9,6 +9,7 @@ import pytest
 import yaml
 
 from lab_grader.checks.action_checks import EXPECTATION_JUDGES, ActionObservation, judge_action
+from lab_grader.checks.image_folder import ImageFolder
 from lab_grader.checks.motion import Sample
 from lab_grader.checks.verdicts import FAIL, INTERFERENCE, PASS
 from lab_grader.suite_file import Range, SuiteError, load_suite
@@ -52,6 +53,9 @@ def load_changed(tmp_path, change):
     (lambda d: d["checks"][4]["expect"]["motion"].update(mean_speed_mps=0.1),
      r"motion\.mean_speed_mps: expected a mapping"),
     (lambda d: d.pop("world"), r"simulator_args: needs a world"),
+    (lambda d: d["checks"][0]["expect"]["images"].update(count=2.5),
+     r"checks\[0\]\.expect\.images\.count: expected a whole number of images, got 2.5"),
+    (lambda d: d["checks"][0]["expect"]["images"].pop("path_field"), r"images\.path_field: missing \(required\)"),
     (lambda d: (d.pop("world"), d.pop("simulator_args")), r"checks\[0\]\.expect\.motion: needs a robot"),
 ])
 def test_bad_part5_keys_are_named(tmp_path, change, message):
@@ -84,8 +88,12 @@ def sweep(samples, images=(1, 2, 3, 4), angles=(22.6, 45.1, 67.7, 90.2), state="
                              feedback, 10.0, None, 14.1, samples=samples, interference=interference)
 
 
+FOUR = ImageFolder("~/myrosdata/x", ("img001.jpg", "img002.jpg", "img003.jpg", "img004.jpg"),
+                   ("img001.jpg", "img002.jpg", "img003.jpg", "img004.jpg"))
+
+
 def test_a_90_degree_sweep_with_feedback_per_image_passes_with_its_turn():
-    verdict = judge_action(CHECKS["sweep_90_4"], sweep(turning(90)), 1.0)
+    verdict = judge_action(CHECKS["sweep_90_4"], sweep(turning(90))._replace(images=FOUR), 1.0)
     assert verdict.verdict == PASS, verdict.reason
     assert "turned counter-clockwise 90.0 deg" in verdict.reason
     assert verdict.evidence["motion"]["turn_deg"] == pytest.approx(90.0, abs=0.01)
@@ -93,7 +101,8 @@ def test_a_90_degree_sweep_with_feedback_per_image_passes_with_its_turn():
 
 
 def test_a_short_sweep_with_missing_and_falling_feedback_names_each_problem():
-    verdict = judge_action(CHECKS["sweep_90_4"], sweep(turning(45), images=(1, 2), angles=(22.6, 10.0)), 1.0)
+    verdict = judge_action(CHECKS["sweep_90_4"], sweep(turning(45), images=(1, 2), angles=(22.6, 10.0))._replace(
+        images=FOUR), 1.0)
     assert verdict.verdict == FAIL
     assert verdict.reason == ("expected feedback current_image [1, 2, 3, 4], it sent [1, 2]; expected feedback "
                               "current_angle never to decrease, it went 22.6 -> 10.0; expected to turn "
@@ -147,4 +156,24 @@ def test_motion_without_ground_truth_is_a_fail_that_says_so():
 
 def test_each_expectation_kind_is_one_registered_judge():
     assert [judge.__name__ for judge in EXPECTATION_JUDGES] == [
-        "state_problems", "result_problems", "feedback_problems", "timing_problems", "robot_problems"]
+        "state_problems", "result_problems", "feedback_problems", "timing_problems", "robot_problems",
+        "images_problems"]
+
+
+def with_images(found):
+    return sweep(turning(90))._replace(images=found)
+
+
+def test_the_saved_images_are_counted_and_must_decode():
+    check = CHECKS["sweep_90_4"]
+    four = ("img001.jpg", "img002.jpg", "img003.jpg", "img004.jpg")
+    assert judge_action(check, with_images(ImageFolder("~/x", four, four)), 1.0).verdict == PASS
+    broken = judge_action(check, with_images(ImageFolder("~/x", four, four[:3])), 1.0)
+    assert broken.verdict == FAIL
+    assert broken.reason == ("expected 4 decodable images in the folder result image_path names ('~/x'), it holds "
+                             "4 image files, 3 of them decodable")
+    assert broken.evidence["images"] == {"folder": "~/x", "files": list(four), "decodable": 3, "problem": None}
+    outside = judge_action(check, with_images(ImageFolder("/etc", problem="/etc is outside the student's home "
+                                                                          "folder")), 1.0)
+    assert outside.reason.endswith("('/etc'): /etc is outside the student's home folder")
+    assert "the images were not looked at" in judge_action(check, sweep(turning(90)), 1.0).reason

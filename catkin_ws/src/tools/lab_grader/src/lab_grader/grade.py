@@ -189,7 +189,8 @@ class SubmissionGrader:
                     runner_log = out_dir / "checks-runner-{}.log".format(number)
                     runner = box.start_trusted(
                         ["python3", "-m", "lab_grader.checks.runner", "--suite", str(self.suite.path), "--serve",
-                         "--ground-truth", str(truth_socket)], self.env, runner_log, commands=True)
+                         "--ground-truth", str(truth_socket), "--student-home", str(box.workspace)], self.env,
+                        runner_log, commands=True)
                 on_stage("exercise {}/{} ({}): finding its node".format(number, len(exercises), exercise.node))
                 node, server = self._start_server(box, submission, exercise, env, out_dir, number,
                                                   served=[node["file"] for node in result["nodes"] if node["file"]])

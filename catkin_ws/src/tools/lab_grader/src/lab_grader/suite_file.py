@@ -75,6 +75,8 @@ The format (suites/week4.yaml is the worked example, with a comment on every key
           motion: {turn_deg: {value: 90, tolerance: 5}}   # with a world: as a service check's, from the goal sent
                                        #   to settle_s after it ended (the robot is reset and still before)
           front_distance_m: {value: 0.4, tolerance: 0.05}  # with a world: as a service check's, once still
+          images: {path_field: image_path, count: 4}   # the result field naming a folder ("~/..." = the student's
+                                       #   HOME) that must hold `count` image files, every one decodable
 """
 import math
 import re
@@ -110,7 +112,8 @@ ADVICE = "advice"
 CHECK_KINDS = (REQUIRED, ADVICE)
 EXPECT_KEYS = ("reply", "reply_matches", "refused", "motion", "front_distance_m")
 ACTION_EXPECT_KEYS = ("state", "result", "result_matches", "feedback", "duration_s", "cancel_to_end_s",
-                      "result_ranges", "feedback_count", "feedback_rising", "motion", "front_distance_m")
+                      "result_ranges", "feedback_count", "feedback_rising", "motion", "front_distance_m", "images")
+IMAGES_KEYS = ("path_field", "count")
 ROBOT_EXPECT_KEYS = ("motion", "front_distance_m")
 GOAL_STATES = ("PENDING", "ACTIVE", "PREEMPTED", "SUCCEEDED", "ABORTED", "REJECTED", "PREEMPTING", "RECALLING",
                "RECALLED", "LOST")
@@ -160,6 +163,13 @@ class Expectation(NamedTuple):
     refused: bool = False
 
 
+class ImagesExpectation(NamedTuple):
+    """The result field that names the folder of saved images, and how many it must hold."""
+
+    path_field: str
+    count: int
+
+
 class ActionExpectation(NamedTuple):
     states: Tuple[str, ...]                 # accepted terminal states; empty = any
     result: Dict[str, Any]
@@ -172,6 +182,7 @@ class ActionExpectation(NamedTuple):
     feedback_rising: Tuple[str, ...]        # feedback fields that must never decrease
     motion: Optional[MotionExpectation]
     front_distance_m: Optional[Range]
+    images: Optional[ImagesExpectation] = None
 
 
 class ServiceSpec(NamedTuple):
@@ -531,7 +542,17 @@ def _action_expectation(convert, value=None, where="expect", world=None) -> Acti
         feedback_count=mapping.get("feedback_count", convert.range),
         feedback_rising=mapping.get("feedback_rising", lambda v, w: _field_names(convert, v, w), default=()),
         motion=mapping.get("motion", lambda v, w: _motion(convert, v, w)),
-        front_distance_m=mapping.get("front_distance_m", convert.range))
+        front_distance_m=mapping.get("front_distance_m", convert.range),
+        images=mapping.get("images", lambda v, w: _images(convert, v, w)))
+
+
+def _images(convert, value, where) -> ImagesExpectation:
+    mapping = _Mapping(convert.file_label, where, value, IMAGES_KEYS)
+    field = mapping.get("path_field", lambda v, w: convert.text(v, w, FIELD_NAME, "a field name"), required=True)
+    count = mapping.get("count", lambda v, w: convert.number(v, w, minimum=0), required=True)
+    if not float(count).is_integer():
+        mapping.fail(mapping.where("count"), "expected a whole number of images, got {}".format(_show(count)))
+    return ImagesExpectation(field, int(count))
 
 
 def _field_names(convert, value, where) -> Tuple[str, ...]:

@@ -21,6 +21,7 @@ settle_s) -> [problem, ...]`; a new kind is one function and one line there.
 from typing import Any, Dict, List, NamedTuple, Optional, Tuple
 
 from lab_grader.checks.fields import field_problems, same_value, shown
+from lab_grader.checks.image_folder import ImageFolder
 from lab_grader.checks.motion import MotionError, Sample, summarize, thin
 from lab_grader.checks.service_checks import front_problems, motion_problems, motion_words
 from lab_grader.checks.verdicts import InterferenceError, Interrupted, Verdict
@@ -42,6 +43,7 @@ class ActionObservation(NamedTuple):
     front_distance_m: Optional[float] = None
     front_measured: bool = False
     interference: Tuple[str, ...] = ()
+    images: Optional[ImageFolder] = None             # the saved images the result names (expect.images)
 
 
 def feedback_values(observation, field) -> List[Any]:
@@ -74,6 +76,9 @@ def evidence_of(check, observation):
     if observation.front_measured:
         front = observation.front_distance_m
         evidence["front_distance_m"] = None if front is None else round(front, 4)
+    if observation.images is not None:
+        evidence["images"] = {"folder": observation.images.named, "files": list(observation.images.images),
+                              "decodable": len(observation.images.decodable), "problem": observation.images.problem}
     evidence.update(state=observation.state, status_text=observation.status_text, result=observation.result,
                     feedback=[[round(t, 3), fields] for t, fields in observation.feedback[:MAX_FEEDBACK_EVIDENCE]])
     if observation.ended_s is not None:
@@ -147,7 +152,26 @@ def robot_problems(expect, observation, motion, settle_s):
     return problems + front_problems(expect.front_distance_m, observation)
 
 
-EXPECTATION_JUDGES = (state_problems, result_problems, feedback_problems, timing_problems, robot_problems)
+def images_problems(expect, observation, motion, settle_s):
+    wanted = expect.images
+    if wanted is None:
+        return []
+    found = observation.images
+    expected = "expected {} decodable image{} in the folder result {} names".format(
+        wanted.count, "" if wanted.count == 1 else "s", wanted.path_field)
+    if found is None:
+        return [expected + ", the images were not looked at"]
+    if found.problem is not None:
+        return ["{} ({}): {}".format(expected, shown(found.named), found.problem)]
+    if len(found.images) != wanted.count or len(found.decodable) != wanted.count:
+        return ["{} ({}), it holds {} image file{}, {} of them decodable".format(
+            expected, shown(found.named), len(found.images), "" if len(found.images) == 1 else "s",
+            len(found.decodable))]
+    return []
+
+
+EXPECTATION_JUDGES = (state_problems, result_problems, feedback_problems, timing_problems, robot_problems,
+                      images_problems)
 
 
 def judge_action(check, observation, settle_s=0.0) -> Verdict:
@@ -186,6 +210,9 @@ def run_action_check(check, suite, context, found) -> Verdict:
             measure_front=check.expect.front_distance_m is not None)
         if observation.error is not None:
             context.stop_robot()    # a goal that never ended may have left the robot driving
+        elif check.expect.images is not None:
+            observation = observation._replace(images=context.inspect_images(
+                (observation.result or {}).get(check.expect.images.path_field)))
         return judge_action(check, observation, suite.settle_s)
     except Interrupted:
         raise

@@ -57,7 +57,7 @@ import rosservice
 from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import Twist
 
-from lab_grader.checks import interference
+from lab_grader.checks import image_folder, interference
 from lab_grader.checks.action_checks import ActionObservation
 from lab_grader.checks.ground_truth import TruthClient
 from lab_grader.checks.motion import Observation, is_still
@@ -231,13 +231,15 @@ class _FeedbackRecorder:
 
 class GradingContext:
     """See the module docstring. Create it once per run (it calls rospy.init_node). With a robot, `ground_truth`
-    is the path of tb3_sim's ground-truth socket (its ~ground_truth_socket)."""
+    is the path of tb3_sim's ground-truth socket (its ~ground_truth_socket). `student_home` is the HOME of the
+    student's nodes, where their saved files are looked for (None: unknown)."""
 
-    def __init__(self, robot=True, ground_truth=None):
+    def __init__(self, robot=True, ground_truth=None, student_home=None):
         if robot and not ground_truth:
             raise CheckError("a suite with a world needs the simulator's ground-truth channel (--ground-truth)")
         rospy.init_node(NODE_NAME, anonymous=True)
         self.robot = robot
+        self.student_home = student_home
         self._changed = threading.Condition()
         self._action_clients = {}         # action name -> (SimpleActionClient, _FeedbackRecorder), made once
         self._sim_seen = (None, time.monotonic())   # (last sim time seen, wall time it changed)
@@ -593,6 +595,10 @@ class GradingContext:
         return ActionObservation(dict(goal_fields), STATE_NAMES.get(outcome["state"], str(outcome["state"])),
                                  client.get_goal_status_text() or "", outcome["result"], feedback(), sent_s,
                                  cancelled_s, outcome["ended_s"], **robot_record(outcome["ended_s"]))
+
+    def inspect_images(self, named):
+        """The images in the folder the result text `named` names, under the student's HOME (an ImageFolder)."""
+        return image_folder.inspect(named, self.student_home)
 
     def shutdown(self):
         """Stop the robot, close the ground-truth channel and leave the graph (abandoned call threads die with the
