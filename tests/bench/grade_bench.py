@@ -3,6 +3,8 @@
 - wall time to grade one Week 4 submission (the lab's reference) at real-time factor 1 (target <= 60 s) and 2
   (target <= 35 s), and where the time goes at each factor (the stages result.json records: building, starting
   the simulator, and per exercise finding its node and its checks, summed here);
+- wall time to grade one Part 5 submission (the lab's week5_actions: CameraSweep and Search, suites/part5.yaml) at
+  factor 1 (target <= 90 s), and its stages;
 - how many check verdicts of the distinct samples (tests/integration/lab_grader/sample_submissions.py: every
   mistake and every self-contained hostile one) are the same at factor 2 as at factor 1: all of them, or the faster
   factor would not be used;
@@ -26,14 +28,15 @@ from integration.lab_grader.sample_submissions import SELF_CONTAINED, make_submi
 CLASS_SIZE = 20
 FAST_FACTOR = 2
 ONE_TARGET_S = {1: 60.0, 2: 35.0}
+PART5_TARGET_S = 90.0
 CLASS_TARGET_S = 600.0
 STAGES = ("building (and starting the simulator)", "starting the simulator", "finding its node", "checks")
 
 
-def grade(folder, out, factor, jobs):
+def grade(folder, out, factor, jobs, suite="week4"):
     """Wall seconds of `rosrun lab_grader grade` on `folder`, and {student: its result}."""
     started = time.monotonic()
-    subprocess.run(["rosrun", "lab_grader", "grade", str(folder), "--suite", "week4", "--out", str(out),
+    subprocess.run(["rosrun", "lab_grader", "grade", str(folder), "--suite", suite, "--out", str(out),
                     "--jobs", str(jobs), "--rtf", str(factor)], check=True, stdout=subprocess.DEVNULL)
     elapsed = time.monotonic() - started
     return elapsed, {path.parent.name: json.loads(path.read_text()) for path in Path(out).glob("*/result.json")}
@@ -42,6 +45,13 @@ def grade(folder, out, factor, jobs):
 def verdicts(results):
     return {student: {check["id"]: check["verdict"] for check in result["checks"]}
             for student, result in results.items()}
+
+
+def print_stages(label, result):
+    stages = result["stage_s"]
+    print("{}: {}".format(label, ", ".join("{} {:.1f} s".format(stage, sum(
+        seconds for name, seconds in stages.items() if name == stage or name.endswith(": " + stage)))
+        for stage in STAGES)))
 
 
 def run(class_size=CLASS_SIZE):
@@ -53,10 +63,11 @@ def run(class_size=CLASS_SIZE):
             seconds, results = grade(work / "one", work / "one-out-{}".format(factor), factor, jobs=1)
             rows.append(("grade one Week 4 submission (reference), factor {}".format(factor), seconds, "s",
                          ONE_TARGET_S[factor], "<="))
-            stages = results["reference"]["stage_s"]
-            print("factor {}: {}".format(factor, ", ".join("{} {:.1f} s".format(stage, sum(
-                seconds for name, seconds in stages.items() if name == stage or name.endswith(": " + stage)))
-                for stage in STAGES)))
+            print_stages("week4, factor {}".format(factor), results["reference"])
+        make_submission("part5_reference", work / "part5")
+        seconds, results = grade(work / "part5", work / "part5-out", 1, jobs=1, suite="part5")
+        rows.append(("grade one Part 5 submission (reference), factor 1", seconds, "s", PART5_TARGET_S, "<="))
+        print_stages("part5, factor 1", results["part5_reference"])
         if not class_size:
             return rows
         for name in SELF_CONTAINED:

@@ -13,6 +13,7 @@ from .hostile_code import FORKS_CHILDREN, PRINTS_MEGABYTES, REACHES_NETWORK, SNO
 
 HERE = Path(__file__).resolve().parent
 REFERENCE = HERE.parents[2] / "catkin_ws" / "src" / "exercises" / "week4_services"
+PART5_REFERENCE = HERE.parents[2] / "catkin_ws" / "src" / "exercises" / "week5_actions"
 # Written from scratch, not from the reference: {name: the package folder}.
 FROM_SCRATCH = {"student_style": HERE / "student_style" / "week4_alice",
                 "course_template": HERE / "student_style" / "week4_course_template"}
@@ -81,6 +82,21 @@ MISTAKES = {
 }
 
 
+PART5_MISTAKES = {
+    # name: {file in week5_actions: [(text in the reference, what the student wrote instead)]}
+    "part5_reference": {},
+    # The sweep writes the message's format text instead of the image; the Search server sends no feedback, and
+    # after its result it "keeps searching": the robot drives on.
+    "part5_careless": {"nodes/action_server.py": [
+        ("        self.save(image_message, path)\n", "        path.write_text(image_message.format)\n")],
+                       "nodes/search_server.py": [
+        ("                self.server.publish_feedback(SearchFeedback(travelled))\n", ""),
+        ("        self.server.publish_feedback(SearchFeedback(result.total_distance_travelled))\n", ""),
+        ("            rospy.loginfo(text)\n", "            rospy.loginfo(text)\n"
+                                             "            self.robot.drive(plan.velocity, 0.0)  # keep searching\n")]},
+}
+
+
 SELF_CONTAINED = tuple(name for name, changes in MISTAKES.items()
                        if not any(PLACEHOLDER.search(new) for replacements in changes.values()
                                   for _, new in replacements)) + tuple(FROM_SCRATCH)
@@ -89,16 +105,18 @@ what a benchmark can grade as a class."""
 
 
 def make_submission(name: str, folder: Path, fill: Optional[Dict[str, str]] = None) -> Path:
-    """The submission `name` (a key of MISTAKES or FROM_SCRATCH) as a student folder holding the package; returns
-    the folder. `fill` replaces placeholders (hostile_code.py's @NAME@) in the files the mistake changed."""
+    """The submission `name` (a key of MISTAKES, PART5_MISTAKES or FROM_SCRATCH) as a student folder holding the
+    package (week4_services, or week5_actions for Part 5); returns the folder. `fill` replaces placeholders
+    (hostile_code.py's @NAME@) in the files the mistake changed."""
     student = Path(folder) / name
     if name in FROM_SCRATCH:
         shutil.copytree(FROM_SCRATCH[name], student / FROM_SCRATCH[name].name,
                         ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
         return student
-    package = student / "week4_services"
-    shutil.copytree(REFERENCE, package, ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
-    for relative, replacements in MISTAKES[name].items():
+    reference, mistakes = (PART5_REFERENCE, PART5_MISTAKES) if name in PART5_MISTAKES else (REFERENCE, MISTAKES)
+    package = student / reference.name
+    shutil.copytree(reference, package, ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
+    for relative, replacements in mistakes[name].items():
         path = package / relative
         text = path.read_text()
         for old, new in replacements:

@@ -11,7 +11,10 @@ package written in the course template's habits (student_style/week4_course_temp
 string), the older message packages (tuos_ros_msgs, com2009_msgs), its own file names (timed_server.py,
 approach_object_server.py) and Parts 1 and 2 both on /move_service. A marker gives both full marks; the grader's
 verdicts, check by check, are stated in the tests at the end (they share the class's grade run: a run of their own
-graded the reference a second time)."""
+graded the reference a second time).
+Part 5 (suites/part5.yaml): the lab's week5_actions (CameraSweep and Search) scores full marks, and a package whose
+sweep saves files that are not images and whose Search server sends no feedback and drives on after its result
+fails those three checks only; both are graded at once, in one grade run of their own after the Week 4 class."""
 import csv
 import json
 import os
@@ -30,6 +33,7 @@ pytestmark = pytest.mark.timeout(GRADE_TIMEOUT_S + 60)
 # The older message packages (com2009_msgs, tuos_ros_msgs) are the course template's: its calibration test covers them.
 CLASS = ("reference", "wrong_direction", "does_not_build", "student_style", "wrong_duration", "never_stops",
          "ignores_invalid_input", "bare_values", "own_service_names", "python2_syntax", "course_template")
+PART5_CLASS = ("part5_reference", "part5_careless")
 REAL_TIME_FACTOR = "2"   # the class and its rerun: a rerun compares like with like only at the same factor
 TIMED_MOVES = {"timed_fwd": 2, "timed_back": 2, "timed_left": 3, "timed_right": 3}   # check: seconds requested
 INVALID_TIMED_MOVES = ("timed_invalid_word", "timed_zero_duration", "timed_negative_duration")
@@ -307,3 +311,48 @@ def test_other_file_names_and_one_service_name_for_two_parts_are_found_as_a_mark
     assert services["/timed_move_service"]["found_by"] == "by type"
     assert services["/timed_move_service"]["found_type"] == "com2009_msgs/TimedMovement"
     assert services["/approach_service"]["found_type"] == "com2009_msgs/Approach"
+
+
+# ---- calibration: Part 5 -------------------------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def graded_part5(env, tmp_path_factory):
+    folder = tmp_path_factory.mktemp("part5_class")
+    for name in PART5_CLASS:
+        make_submission(name, folder)
+    out = tmp_path_factory.mktemp("part5_grades")
+    grade(env, folder, "--suite", "part5", "--out", out, "--jobs", "2", "--rtf", REAL_TIME_FACTOR)
+    return results(out)
+
+
+@pytest.mark.slow
+def test_part5_the_references_score_full_marks_measured_from_ground_truth(graded_part5):
+    result = graded_part5["part5_reference"]
+    assert set(verdicts(result).values()) == {"pass"}, json.dumps(result["checks"], indent=1)[:3000]
+    assert result["score"] == result["max_score"] == 100
+    checks = by_id(result)
+    assert 85 < checks["sweep_90_4"]["evidence"]["motion"]["turn_deg"] < 95
+    assert [fields["current_image"] for _, fields in checks["sweep_90_4"]["evidence"]["feedback"]] == [1, 2, 3, 4]
+    assert checks["sweep_90_4"]["evidence"]["images"]["decodable"] == 4
+    assert abs(checks["search_stops_at_distance"]["evidence"]["front_distance_m"] - 0.4) < 0.03
+    assert abs(checks["search_stops_at_distance"]["evidence"]["motion"]["mean_speed_mps"] - 0.1) < 0.01
+    assert {node["exercise"]: node["found_by"] for node in result["nodes"]} == dict.fromkeys(
+        ("action_server.py", "search_server.py"), "the course's file name")
+
+
+@pytest.mark.slow
+def test_part5_unreadable_images_no_feedback_and_driving_on_fail_those_checks(graded_part5):
+    result = graded_part5["part5_careless"]
+    checks = by_id(result)
+    sweep = checks["sweep_90_4"]
+    assert sweep["verdict"] == "fail", sweep
+    assert sweep["reason"].endswith("it holds 4 image files, 0 of them decodable"), sweep["reason"]
+    stops = checks["search_stops_at_distance"]
+    assert stops["verdict"] == "fail", stops
+    assert "expected the robot to be still" in stops["reason"] and "it was moving" in stops["reason"], stops["reason"]
+    assert stops["evidence"]["motion"]["end_v"] > 0.05
+    feedback = checks["search_feedback_and_result"]
+    assert feedback["verdict"] == "fail", feedback
+    assert "expected at least 3 feedback messages, it sent 0" in feedback["reason"], feedback["reason"]
+    others_pass(result, "sweep_90_4", "search_stops_at_distance", "search_feedback_and_result")
+    assert result["score"] == 35

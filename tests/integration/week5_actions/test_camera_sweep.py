@@ -1,8 +1,12 @@
-"""The Week 5 CameraSweep action server (roslaunch week5_actions camera_sweep.launch) against tb3_sim's camera
-in colour_search at 2x real time: a 90 degree sweep saves 4 decodable JPEGs while the robot turns 90 degrees
-(measured on /odom); refused goals abort at once without motion or files; a cancel preempts the goal, keeps the
-images so far and stops the robot within 1 s of sim time; the course's client prints feedback and the result,
-and Ctrl-C in the client cancels its goal."""
+"""The Week 5 action servers against tb3_sim in colour_search at 2x real time, on one master and simulator.
+
+CameraSweep (roslaunch week5_actions camera_sweep.launch): a 90 degree sweep saves 4 decodable JPEGs while the
+robot turns 90 degrees (measured on /odom); refused goals abort at once without motion or files; a cancel preempts
+the goal, keeps the images so far and stops the robot within 1 s of sim time; the course's client prints feedback
+and the result, and Ctrl-C in the client cancels its goal.
+Search (roslaunch week5_actions search.launch), towards the red pillar 1.2 m ahead: it stops 0.4 m from it with
+feedback of the distance travelled and the result's fields matching the motion; refused goals abort without
+motion; a cancel preempts the goal and stops the robot within 1 s of sim time."""
 import math
 import re
 import signal
@@ -116,4 +120,54 @@ def test_ctrl_c_in_the_client_cancels_its_goal(ros_master, sweeper):
     assert client.popen.wait(timeout=20) == 1
     result = sweeper.probe.wait_for_message(
         "/camera_sweep_action_server/result", 10, lambda msg: msg["status"]["status"] == GoalStatus.PREEMPTED)
+    assert sweeper.is_still(sweeper.odom_after(result["header"]["stamp"] + STOP_WITHIN_SIM_S))
+
+
+SEARCH_STOP_TOLERANCE_M = 0.03
+
+
+def test_a_search_stops_at_the_approach_distance_with_feedback_and_result(sweeper, searcher):
+    before = sweeper.view.settled_pose()
+    goal = searcher.send(fwd_velocity=0.1, approach_distance=0.4)
+    result = searcher.result(goal)
+    after = sweeper.view.settled_pose()
+    assert result["status"]["status"] == GoalStatus.SUCCEEDED, result["status"]["text"]
+    assert result["status"]["text"].startswith("Stopped 0.40 m from the object ahead"), result
+    fields = result["result"]
+    travelled = math.hypot(after[0] - before[0], after[1] - before[1])
+    assert fields["total_distance_travelled"] == pytest.approx(travelled, abs=0.01)
+    assert after[0] - before[0] == pytest.approx(travelled, abs=0.005), "straight ahead"
+    assert fields["closest_object_distance"] == pytest.approx(0.4, abs=SEARCH_STOP_TOLERANCE_M)
+    assert abs(fields["closest_object_angle"]) <= 20.0
+    distances = [feedback["current_distance_travelled"] for feedback in searcher.feedback(goal)]
+    assert len(distances) >= 5, distances      # one per LiDAR sweep (5 Hz) over ~7 s of driving
+    assert distances == sorted(distances) and distances[0] < 0.05, distances
+    assert distances[-1] == pytest.approx(fields["total_distance_travelled"], abs=1e-6)
+
+
+@pytest.mark.parametrize("goal, reason", [
+    ({"fwd_velocity": 0.3, "approach_distance": 0.4}, "fwd_velocity 0.3 m/s is not in (0, 0.26]"),
+    ({"fwd_velocity": 0.1, "approach_distance": -0.4}, "approach_distance -0.4 m is not in [0.2, 3.5)"),
+])
+def test_invalid_search_goals_are_aborted_without_motion(sweeper, searcher, goal, reason):
+    before = sweeper.view.settled_pose()
+    started = time.monotonic()
+    result = searcher.result(searcher.send(**goal), timeout_s=10)
+    assert time.monotonic() - started < 2.0
+    assert result["status"]["status"] == GoalStatus.ABORTED
+    assert result["status"]["text"].startswith("Goal refused: " + reason), result
+    time.sleep(0.5)
+    after = sweeper.view.settled_pose()
+    assert math.hypot(after[0] - before[0], after[1] - before[1]) < 0.002
+
+
+def test_a_cancelled_search_is_preempted_and_stops_the_robot(sweeper, searcher):
+    goal = searcher.send(fwd_velocity=0.1, approach_distance=0.2)    # ~0.9 m to drive: 9 s, cancelled after 1
+    searcher.wait_for_feedback(goal, lambda fields: fields["current_distance_travelled"] >= 0.1)
+    searcher.cancel(goal)
+    result = searcher.result(goal, timeout_s=10)
+    assert result["status"]["status"] == GoalStatus.PREEMPTED, result["status"]["text"]
+    travelled = result["result"]["total_distance_travelled"]
+    assert travelled >= 0.1, result
+    assert result["status"]["text"] == "Cancelled: stopped after {:.3f} m.".format(travelled)
     assert sweeper.is_still(sweeper.odom_after(result["header"]["stamp"] + STOP_WITHIN_SIM_S))

@@ -189,7 +189,8 @@ class SubmissionGrader:
                     runner_log = out_dir / "checks-runner-{}.log".format(number)
                     runner = box.start_trusted(
                         ["python3", "-m", "lab_grader.checks.runner", "--suite", str(self.suite.path), "--serve",
-                         "--ground-truth", str(truth_socket)], self.env, runner_log, commands=True)
+                         "--ground-truth", str(truth_socket), "--student-home", str(box.workspace)], self.env,
+                        runner_log, commands=True)
                 on_stage("exercise {}/{} ({}): finding its node".format(number, len(exercises), exercise.node))
                 node, server = self._start_server(box, submission, exercise, env, out_dir, number,
                                                   served=[node["file"] for node in result["nodes"] if node["file"]])
@@ -235,7 +236,7 @@ class SubmissionGrader:
             return MASTER_READY_SERVICE, out_dir / "roscore.log"
         box.start_trusted(["roslaunch", "--wait", "tb3_sim", "tb3_sim.launch", "gui:=false",
                            "world:=" + self.suite.world, "real_time_factor:={:g}".format(self.real_time_factor),
-                           "ground_truth_socket:={}".format(truth_socket)],
+                           "ground_truth_socket:={}".format(truth_socket)] + self.suite.launch_args(),
                           self.env, out_dir / "simulator.log")
         return SIMULATOR_READY_SERVICE, out_dir / "simulator.log"
 

@@ -12,6 +12,7 @@ The format (suites/week4.yaml is the worked example, with a comment on every key
     world: approach_arena             # optional: the tb3_sim world the orchestrator starts (roslaunch tb3_sim
                                       #   tb3_sim.launch world:=approach_arena); without it only a master runs, and
                                       #   checks may not expect motion or a LiDAR distance
+    simulator_args: {camera_width: 640}   # optional: more tb3_sim.launch args (name: value), with a world only
     real_time_factor: 1.0             # optional (1.0): the simulator speed the orchestrator grades at
     settle_s: 1.0                     # optional (1.0): sim s recorded after each reply; "left still" is judged then
     timeout_s: 30                     # optional (30): default reply timeout of a check, sim s
@@ -51,6 +52,7 @@ The format (suites/week4.yaml is the worked example, with a comment on every key
             turn_max_deg: 5           # |turn_deg| <= this
             duration_s: {value: 5, tolerance: 0.5}    # motion start to stop, sim s
             excursion_max_m: 0.01     # never farther than this from the start ("no motion")
+            mean_speed_mps: {value: 0.1, tolerance: 0.02}  # forward_m / duration_s: the speed it drove at
             still_at_end: true        # |v| < 0.01 m/s and |w| < 0.01 rad/s settle_s after the reply
           front_distance_m: {value: 0.4, tolerance: 0.05}  # closest LiDAR return within +-20 deg, once still
       - id: count_three               # an action check: send a goal, maybe cancel it, judge how it ended
@@ -67,6 +69,14 @@ The format (suites/week4.yaml is the worked example, with a comment on every key
           feedback: {counts_elapsed: [0, 1, 2]}  # every feedback message's field value, in order
           duration_s: {value: 3, tolerance: 0.5}   # goal sent to goal ended, s
           cancel_to_end_s: {max: 1.5}  # cancel sent to goal ended, s
+          result_ranges: {total_distance_travelled: {min: 0.5}}   # numeric result fields within a range
+          feedback_count: {min: 4}     # how many feedback messages the goal sent
+          feedback_rising: [current_distance_travelled]   # fields that never decrease from one feedback to the next
+          motion: {turn_deg: {value: 90, tolerance: 5}}   # with a world: as a service check's, from the goal sent
+                                       #   to settle_s after it ended (the robot is reset and still before)
+          front_distance_m: {value: 0.4, tolerance: 0.05}  # with a world: as a service check's, once still
+          images: {path_field: image_path, count: 4}   # the result field naming a folder ("~/..." = the student's
+                                       #   HOME) that must hold `count` image files, every one decodable
 """
 import math
 import re
@@ -92,8 +102,8 @@ FIELD_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 SERVICE_NAME = re.compile(r"^(/[A-Za-z][A-Za-z0-9_]*)+$")
 FILE_NAME = re.compile(r"^[A-Za-z0-9_.+-]+$")
 TYPE_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*/[A-Za-z][A-Za-z0-9_]*$")
-SUITE_KEYS = ("suite", "title", "world", "real_time_factor", "settle_s", "timeout_s", "still_timeout_s",
-              "by_type_grace_s", "services", "actions", "checks")
+SUITE_KEYS = ("suite", "title", "world", "simulator_args", "real_time_factor", "settle_s", "timeout_s",
+              "still_timeout_s", "by_type_grace_s", "services", "actions", "checks")
 SERVICE_KEYS = ("name", "type", "node", "wait_s")
 SERVICE_CHECK_KEYS = ("id", "title", "kind", "weight", "service", "request", "timeout_s", "expect")
 ACTION_CHECK_KEYS = ("id", "title", "kind", "weight", "action", "goal", "cancel_after_s", "timeout_s", "expect")
@@ -101,7 +111,10 @@ REQUIRED = "required"
 ADVICE = "advice"
 CHECK_KINDS = (REQUIRED, ADVICE)
 EXPECT_KEYS = ("reply", "reply_matches", "refused", "motion", "front_distance_m")
-ACTION_EXPECT_KEYS = ("state", "result", "result_matches", "feedback", "duration_s", "cancel_to_end_s")
+ACTION_EXPECT_KEYS = ("state", "result", "result_matches", "feedback", "duration_s", "cancel_to_end_s",
+                      "result_ranges", "feedback_count", "feedback_rising", "motion", "front_distance_m", "images")
+IMAGES_KEYS = ("path_field", "count")
+ROBOT_EXPECT_KEYS = ("motion", "front_distance_m")
 GOAL_STATES = ("PENDING", "ACTIVE", "PREEMPTED", "SUCCEEDED", "ABORTED", "REJECTED", "PREEMPTING", "RECALLING",
                "RECALLED", "LOST")
 RANGE_KEYS = ("min", "max", "value", "tolerance")
@@ -139,6 +152,7 @@ class MotionExpectation(NamedTuple):
     duration_s: Optional[Range] = None
     excursion_max_m: Optional[float] = None
     still_at_end: Optional[bool] = None
+    mean_speed_mps: Optional[Range] = None
 
 
 class Expectation(NamedTuple):
@@ -149,6 +163,13 @@ class Expectation(NamedTuple):
     refused: bool = False
 
 
+class ImagesExpectation(NamedTuple):
+    """The result field that names the folder of saved images, and how many it must hold."""
+
+    path_field: str
+    count: int
+
+
 class ActionExpectation(NamedTuple):
     states: Tuple[str, ...]                 # accepted terminal states; empty = any
     result: Dict[str, Any]
@@ -156,6 +177,12 @@ class ActionExpectation(NamedTuple):
     feedback: Dict[str, Tuple[Any, ...]]    # field -> its values over the feedback messages, in order
     duration_s: Optional[Range]
     cancel_to_end_s: Optional[Range]
+    result_ranges: Dict[str, Range]         # numeric result field -> its range
+    feedback_count: Optional[Range]
+    feedback_rising: Tuple[str, ...]        # feedback fields that must never decrease
+    motion: Optional[MotionExpectation]
+    front_distance_m: Optional[Range]
+    images: Optional[ImagesExpectation] = None
 
 
 class ServiceSpec(NamedTuple):
@@ -206,6 +233,11 @@ class Suite(NamedTuple):
     services: Tuple[ServiceSpec, ...]
     checks: Tuple[CheckSpec, ...]
     actions: Tuple[ServiceSpec, ...] = ()
+    simulator_args: Tuple[Tuple[str, Any], ...] = ()   # (tb3_sim.launch arg, value), in the file's order
+
+    def launch_args(self):
+        """The simulator's roslaunch args beyond world and gui: ["camera_width:=640", ...]."""
+        return ["{}:={}".format(name, value) for name, value in self.simulator_args]
 
     @property
     def nodes(self):
@@ -381,6 +413,9 @@ def parse_suite(data, path) -> Suite:
                    required=True)
     title = top.get("title", convert.text, default=name)
     world = top.get("world", convert.text)
+    simulator_args = top.get("simulator_args", lambda v, w: convert.fields(v, w, convert.scalar), default={})
+    if simulator_args and world is None:
+        top.fail("simulator_args", "needs a world: without one no simulator runs")
     real_time_factor = top.get("real_time_factor", convert.positive, default=DEFAULT_REAL_TIME_FACTOR)
     settle_s = top.get("settle_s", convert.non_negative, default=DEFAULT_SETTLE_S)
     default_timeout_s = top.get("timeout_s", convert.positive, default=DEFAULT_TIMEOUT_S)
@@ -397,7 +432,7 @@ def parse_suite(data, path) -> Suite:
     return Suite(name=name, title=title, path=path, world=world, real_time_factor=real_time_factor,
                  settle_s=float(settle_s),
                  still_timeout_s=still_timeout_s, by_type_grace_s=float(by_type_grace_s), services=services,
-                 checks=checks, actions=actions)
+                 checks=checks, actions=actions, simulator_args=tuple(simulator_args.items()))
 
 
 class _Targets(NamedTuple):
@@ -454,7 +489,7 @@ def _checks(convert, value, where, targets, default_timeout_s) -> Tuple[CheckSpe
             action = entry.get("action", lambda v, w: _reference(convert, v, w, targets.actions, "actions"))
             goal = entry.get("goal", lambda v, w: convert.fields(v, w, convert.scalar), default={})
             cancel_after_s = entry.get("cancel_after_s", convert.positive)
-            expect = entry.get("expect", lambda v, w: _action_expectation(convert, v, w),
+            expect = entry.get("expect", lambda v, w: _action_expectation(convert, v, w, targets.world),
                                default=_action_expectation(convert))
             result.append(CheckSpec(check_id, title, weight, None, None, timeout_s, expect, action=action, goal=goal,
                                     cancel_after_s=None if cancel_after_s is None else float(cancel_after_s),
@@ -473,9 +508,7 @@ def _expectation(convert, value=None, where="expect", world=None) -> Expectation
     if value is None:
         return Expectation({}, {}, None, None)
     mapping = _Mapping(convert.file_label, where, value, EXPECT_KEYS)
-    for robot_key in ("motion", "front_distance_m"):
-        if robot_key in value and world is None:
-            mapping.fail(mapping.where(robot_key), "needs a robot: the suite has no world")
+    _needs_robot(mapping, world)
     reply = mapping.get("reply", lambda v, w: convert.fields(v, w, convert.scalar), default={})
     matches = mapping.get("reply_matches", lambda v, w: convert.fields(v, w, convert.regex), default={})
     refused = mapping.get("refused", convert.boolean, default=False)
@@ -486,17 +519,47 @@ def _expectation(convert, value=None, where="expect", world=None) -> Expectation
     return Expectation(reply, matches, motion, front, refused)
 
 
-def _action_expectation(convert, value=None, where="expect") -> ActionExpectation:
+def _needs_robot(mapping, world):
+    for robot_key in ROBOT_EXPECT_KEYS:
+        if robot_key in mapping.data and world is None:
+            mapping.fail(mapping.where(robot_key), "needs a robot: the suite has no world")
+
+
+def _action_expectation(convert, value=None, where="expect", world=None) -> ActionExpectation:
     if value is None:
-        return ActionExpectation((), {}, {}, {}, None, None)
+        return ActionExpectation((), {}, {}, {}, None, None, {}, None, (), None, None)
     mapping = _Mapping(convert.file_label, where, value, ACTION_EXPECT_KEYS)
+    _needs_robot(mapping, world)
     states = mapping.get("state", lambda v, w: _states(convert, v, w), default=())
     result = mapping.get("result", lambda v, w: convert.fields(v, w, convert.scalar), default={})
     matches = mapping.get("result_matches", lambda v, w: convert.fields(v, w, convert.regex), default={})
     feedback = mapping.get("feedback", lambda v, w: convert.fields(v, w, lambda i, iw: _sequence(convert, i, iw)),
                            default={})
-    return ActionExpectation(states, result, matches, feedback, mapping.get("duration_s", convert.range),
-                             mapping.get("cancel_to_end_s", convert.range))
+    return ActionExpectation(
+        states, result, matches, feedback, mapping.get("duration_s", convert.range),
+        mapping.get("cancel_to_end_s", convert.range),
+        result_ranges=mapping.get("result_ranges", lambda v, w: convert.fields(v, w, convert.range), default={}),
+        feedback_count=mapping.get("feedback_count", convert.range),
+        feedback_rising=mapping.get("feedback_rising", lambda v, w: _field_names(convert, v, w), default=()),
+        motion=mapping.get("motion", lambda v, w: _motion(convert, v, w)),
+        front_distance_m=mapping.get("front_distance_m", convert.range),
+        images=mapping.get("images", lambda v, w: _images(convert, v, w)))
+
+
+def _images(convert, value, where) -> ImagesExpectation:
+    mapping = _Mapping(convert.file_label, where, value, IMAGES_KEYS)
+    field = mapping.get("path_field", lambda v, w: convert.text(v, w, FIELD_NAME, "a field name"), required=True)
+    count = mapping.get("count", lambda v, w: convert.number(v, w, minimum=0), required=True)
+    if not float(count).is_integer():
+        mapping.fail(mapping.where("count"), "expected a whole number of images, got {}".format(_show(count)))
+    return ImagesExpectation(field, int(count))
+
+
+def _field_names(convert, value, where) -> Tuple[str, ...]:
+    if not isinstance(value, list) or not value:
+        convert.fail(where, "expected a non-empty list of field names, got {}".format(_show(value)))
+    return tuple(convert.text(item, "{}[{}]".format(where, index), FIELD_NAME, "a field name")
+                 for index, item in enumerate(value))
 
 
 def _states(convert, value, where) -> Tuple[str, ...]:
@@ -526,6 +589,7 @@ def _motion(convert, value, where) -> MotionExpectation:
         duration_s=mapping.get("duration_s", convert.range),
         excursion_max_m=mapping.get("excursion_max_m", convert.non_negative),
         still_at_end=mapping.get("still_at_end", convert.boolean),
+        mean_speed_mps=mapping.get("mean_speed_mps", convert.range),
     )
 
 

@@ -30,7 +30,9 @@ the student's nodes. It
   master knows topic types by name only, so the name is what is compared; the client's md5sum check on
   connecting rejects a look-alike of another layout;
 - sends one graded goal (`observe_action`): records every feedback message, cancels the goal `cancel_after_s`
-  after sending it if asked, and waits at most `timeout_s` for it to end, all in ROS time.
+  after sending it if asked, and waits at most `timeout_s` for it to end, all in ROS time; with a robot it also
+  records the true motion from before the goal until `settle_s` after its end, the front distance once still if
+  asked, and the interference meanwhile, as `observe` does for a call.
 
 A suite without a world has no robot (`robot=False`): no /odom, /scan or /cmd_vel, nothing to reset, ROS time is
 wall time, and observations carry no samples.
@@ -55,7 +57,7 @@ import rosservice
 from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import Twist
 
-from lab_grader.checks import interference
+from lab_grader.checks import image_folder, interference
 from lab_grader.checks.action_checks import ActionObservation
 from lab_grader.checks.ground_truth import TruthClient
 from lab_grader.checks.motion import Observation, is_still
@@ -229,13 +231,15 @@ class _FeedbackRecorder:
 
 class GradingContext:
     """See the module docstring. Create it once per run (it calls rospy.init_node). With a robot, `ground_truth`
-    is the path of tb3_sim's ground-truth socket (its ~ground_truth_socket)."""
+    is the path of tb3_sim's ground-truth socket (its ~ground_truth_socket). `student_home` is the HOME of the
+    student's nodes, where their saved files are looked for (None: unknown)."""
 
-    def __init__(self, robot=True, ground_truth=None):
+    def __init__(self, robot=True, ground_truth=None, student_home=None):
         if robot and not ground_truth:
             raise CheckError("a suite with a world needs the simulator's ground-truth channel (--ground-truth)")
         rospy.init_node(NODE_NAME, anonymous=True)
         self.robot = robot
+        self.student_home = student_home
         self._changed = threading.Condition()
         self._action_clients = {}         # action name -> (SimpleActionClient, _FeedbackRecorder), made once
         self._sim_seen = (None, time.monotonic())   # (last sim time seen, wall time it changed)
@@ -543,9 +547,25 @@ class GradingContext:
             made = self._action_clients[action.found] = (client, recorder)
         return made
 
-    def observe_action(self, action: FoundService, goal_fields, timeout_s, cancel_after_s=None):
+    def observe_action(self, action: FoundService, goal_fields, timeout_s, cancel_after_s=None, settle_s=0.0,
+                       measure_front=False):
         """Send one goal with `goal_fields` to `action.found` and record how it went (an ActionObservation)."""
         client, recorder = self._action_client(action)
+        origin, recording = (self._truth.latest, self._truth.mark()) if self.robot else (None, None)
+
+        def robot_record(ended_s):
+            """The samples, front distance and interference of the goal (nothing without a robot)."""
+            if not self.robot:
+                return {}
+            front = {}
+            if ended_s is not None:
+                self._wait_sim(ended_s + settle_s)
+                if measure_front:
+                    front = dict(front_distance_m=self._truth.request("front_distance")["front_m"],
+                                 front_measured=True)
+            samples = ((origin,) if origin is not None else ()) + self._truth.since(recording).samples
+            return dict(front, samples=samples, interference=tuple(self._findings()))
+
         try:
             goal = action_message_class(action.expected_type, "Goal")(**goal_fields)
         except (AttributeError, TypeError) as error:
@@ -571,10 +591,14 @@ class GradingContext:
         if not self._wait_sim(sent_s + timeout_s, ended.is_set):
             client.cancel_goal()
             return ActionObservation(dict(goal_fields), None, "", None, feedback(), sent_s, cancelled_s, None,
-                                     error="no result within {:g} s".format(timeout_s))
+                                     error="no result within {:g} s".format(timeout_s), **robot_record(None))
         return ActionObservation(dict(goal_fields), STATE_NAMES.get(outcome["state"], str(outcome["state"])),
                                  client.get_goal_status_text() or "", outcome["result"], feedback(), sent_s,
-                                 cancelled_s, outcome["ended_s"])
+                                 cancelled_s, outcome["ended_s"], **robot_record(outcome["ended_s"]))
+
+    def inspect_images(self, named):
+        """The images in the folder the result text `named` names, under the student's HOME (an ImageFolder)."""
+        return image_folder.inspect(named, self.student_home)
 
     def shutdown(self):
         """Stop the robot, close the ground-truth channel and leave the graph (abandoned call threads die with the

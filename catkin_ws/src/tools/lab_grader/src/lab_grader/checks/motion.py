@@ -54,6 +54,12 @@ class MotionSummary(NamedTuple):
     def moved(self):
         return self.start_s is not None
 
+    @property
+    def mean_speed_mps(self):
+        """forward_m / duration_s (m/s, negative when reversing): the speed it drove at, the drive's ramps
+        included (0.1 m/s over 0.8 m reads ~0.099); 0 when it never moved."""
+        return self.forward_m / self.duration_s if self.duration_s > 0 else 0.0
+
     def as_evidence(self):
         """The JSON form of the result file's evidence.motion (rounded to 0.1 mm, 0.01 deg and 1 ms)."""
         return {
@@ -68,6 +74,7 @@ class MotionSummary(NamedTuple):
             "stopped_after_s": None if self.stop_s is None else round(self.stop_s - self.since_s, 3),
             "end_v": round(self.end_v, 4),
             "end_w": round(self.end_w, 4),
+            "mean_speed_mps": round(self.mean_speed_mps, 4),
         }
 
 

@@ -6,7 +6,8 @@ to lab_grader.checks.action_checks. A check that cannot be run (a service not fo
 context failing to start) gets an error verdict; every check of the suite is listed in the results.
 
 `main()` is `rosrun lab_grader run_checks --suite <name or path> --out <results.json> [--check-timeout S]
-[--ground-truth SOCKET] [--exercise FILE]` (a suite with a world needs SOCKET, tb3_sim's ~ground_truth_socket;
+[--ground-truth SOCKET] [--exercise FILE] [--student-home DIR]` (a suite with a world needs SOCKET, tb3_sim's
+~ground_truth_socket; DIR is the HOME of the student's nodes, where image checks look for their files;
 --exercise runs only the checks of the services and actions the course's FILE serves):
 the results file (lab_grader.checks.verdicts) is always written, atomically, also when checks errored or the
 runner was interrupted (then "complete": false); exit code 0 once it is written, 2 for a bad suite or arguments
@@ -45,7 +46,7 @@ def not_run_evidence(check):
 
 def run_one(check, suite, context, found) -> Verdict:
     if check.action is not None:
-        return action_checks.run_action_check(check, context, found.get(check.action))
+        return action_checks.run_action_check(check, suite, context, found.get(check.action))
     return service_checks.run_check(check, suite, context, found.get(check.service))
 
 
@@ -186,6 +187,9 @@ def parse_args(argv):
     parser.add_argument("--ground-truth", metavar="SOCKET", default=None,
                         help="tb3_sim's private ground-truth socket (its ~ground_truth_socket); needed when the "
                         "suite has a world: the checks measure the robot through it, never through /odom")
+    parser.add_argument("--student-home", metavar="DIR", default=None,
+                        help="the HOME of the student's nodes: the images a result names (\"~/...\") are looked for "
+                        "there")
     # ROS remappings (name:=value) are for rospy, not for us, as rospy.myargv would strip them.
     args = parser.parse_args([arg for arg in argv if ":=" not in arg])
     if args.serve and (args.out is not None or args.exercise is not None):
@@ -210,7 +214,8 @@ def main(argv=None):
     def make_context():
         # Imported here so that the checks' logic above imports (and is unit-tested) without rospy.
         from lab_grader.checks.context import GradingContext
-        contexts.append(GradingContext(robot=suite.world is not None, ground_truth=args.ground_truth))
+        contexts.append(GradingContext(robot=suite.world is not None, ground_truth=args.ground_truth,
+                                       student_home=args.student_home))
         return contexts[-1]
 
     if args.serve:

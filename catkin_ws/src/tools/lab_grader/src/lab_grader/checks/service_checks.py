@@ -106,6 +106,9 @@ def motion_problems(wanted, motion, settle_s):
             happened = "it moved for {:.2f} s".format(motion.duration_s)
         problems.append("expected the motion to last {} of sim time, {}".format(wanted.duration_s.describe("s"),
                                                                                happened))
+    if wanted.mean_speed_mps is not None and not wanted.mean_speed_mps.contains(motion.mean_speed_mps):
+        problems.append("expected to drive at a mean forward speed of {}, it drove at {} m/s".format(
+            wanted.mean_speed_mps.describe("m/s"), signed(motion.mean_speed_mps, 3)))
     if wanted.excursion_max_m is not None and motion.excursion_m > wanted.excursion_max_m:
         problems.append("expected to stay within {:g} m of where it started, it got {:.3f} m away".format(
             wanted.excursion_max_m, motion.excursion_m))
