@@ -2,10 +2,11 @@
 
     source scripts/env.sh && python3 tests/bench/web_bench.py [seconds]
 
-Starts a private roscore, tb3_sim at real time through the Week 4 demo (week4_demo.launch, headless, 320x240
-camera), lab_web's server (rosrun lab_web web_server on a free port) and ONE headless Chromium page
-(roslab.browser.HeadlessBrowser) connected to it. The probe publishes one /cmd_vel turning the robot slowly
-(tb3_sim keeps the last command), so every state frame carries something new. Then, over ~20 s of wall time:
+Starts a private roscore, tb3_sim at real time through the Week 4 demo (week4_demo.launch, headless, the
+Waffle's 1920x1080 camera as a student has it), lab_web's server (rosrun lab_web web_server on a free port) and
+ONE headless Chromium page (roslab.browser.HeadlessBrowser) connected to it. The probe publishes one /cmd_vel
+turning the robot slowly (tb3_sim keeps the last command), so every state frame carries something new. Then,
+over ~20 s of wall time:
 - CPU of the lab_web server process (user + system, all threads) as % of one core (target <= 5 %);
 - state-to-page latency, the page's `labView.latenciesMs` (Date.now() when a frame is handled minus the frame's
   stamp_ms, the wall time the newest /odom or /scan reached the server): median and 95th percentile (<= 100 ms);
@@ -13,7 +14,11 @@ camera), lab_web's server (rosrun lab_web web_server on a free port) and ONE hea
   at most 25);
 - then a 384 x 384 map (gmapping's size for the course arenas at 0.05 m: a free room with walls in unknown space)
   published every 2 s as gmapping does, over MAP_MEASURE_S: the map frame's size (base64 PNG), map frames per
-  second the page drew, and the server's CPU with the map panel following /tf as well.
+  second the page drew, and the server's CPU with the map panel following /tf as well;
+- then the camera shown on the page ("Show camera" ticked) over CAMERA_MEASURE_S: tb3_sim's real-time factor
+  (sim seconds over wall seconds, target >= 0.97 at factor 1), the simulator's CPU (rendering and JPEG-encoding
+  1920x1080 frames while lab_web takes its snapshots) and the server's CPU (a snapshot of the compressed images
+  every 0.5 s, decoded at a quarter size), and the thumbnails per second the page showed.
 `run()` returns the rows [(name, value, unit, target, comparison)] for scripts/bench's table.
 """
 import sys
@@ -40,7 +45,10 @@ FPS_TARGET = 20.0
 MAP_MEASURE_S = 10.0
 MAP_CELLS = 384
 MAP_PERIOD_S = 2.0
-DEMO = ("week4_services", "week4_demo.launch", "gui:=false", "camera_width:=320", "camera_height:=240")
+CAMERA_MEASURE_S = 15.0
+CAMERA_SETTLE_S = 3.0
+RTF_TARGET = 0.97
+DEMO = ("week4_services", "week4_demo.launch", "gui:=false")
 
 
 
@@ -82,9 +90,12 @@ def measure_with_page(duration_s=MEASURE_S):
         pid = node_pid(master.uri, "/lab_web")
         browser.script("labView.latenciesMs.length = 0;")
         frames_start = browser.script("return labView.frames;")
+        simulator_pid = node_pid(master.uri, "/gazebo")
+        sim_start, sim_cpu_start = probe.now(), cpu_seconds(simulator_pid)
         cpu_start, wall_start = cpu_seconds(pid), time.monotonic()
         time.sleep(duration_s)
         cpu_used = cpu_seconds(pid) - cpu_start
+        sim_end, sim_cpu_end = probe.now(), cpu_seconds(simulator_pid)
         frames_end = browser.script("return labView.frames;")
         latencies = browser.script("return labView.latenciesMs.slice();")
         wall = time.monotonic() - wall_start
@@ -92,8 +103,10 @@ def measure_with_page(duration_s=MEASURE_S):
             raise RuntimeError("the page recorded no latencies in {:.0f} s".format(wall))
         result = {"cpu": 100.0 * cpu_used / wall, "p50": float(numpy.percentile(latencies, 50)),
                   "p95": float(numpy.percentile(latencies, 95)), "fps": (frames_end - frames_start) / wall,
-                  "samples": len(latencies)}
+                  "samples": len(latencies), "rtf": (sim_end - sim_start) / wall,
+                  "sim_cpu": 100.0 * (sim_cpu_end - sim_cpu_start) / wall}
         result.update(measure_map(probe, browser, pid))
+        result.update(measure_camera(probe, browser, pid, simulator_pid))
         return result
     finally:
         try:
@@ -136,6 +149,27 @@ def measure_map(probe, browser, pid):
             "map_cpu": 100.0 * (cpu_seconds(pid) - cpu_start) / wall}
 
 
+def measure_camera(probe, browser, pid, simulator_pid):
+    """{"camera_rtf", "camera_sim_cpu", "camera_cpu", "camera_rate"} while the page shows the camera."""
+    browser.script("""
+        window.cameraShown = 0;
+        new MutationObserver(() => { window.cameraShown += 1; })
+          .observe(document.getElementById('camera-img'), {attributes: true, attributeFilter: ['src']});
+        document.getElementById('camera-toggle').click();""")
+    wait_until(lambda: browser.script("return window.cameraShown > 0;"), 30, "the first camera thumbnail")
+    time.sleep(CAMERA_SETTLE_S)
+    shown_start = browser.script("return window.cameraShown;")
+    sim_start, cpu_start, sim_cpu_start = probe.now(), cpu_seconds(pid), cpu_seconds(simulator_pid)
+    wall_start = time.monotonic()
+    time.sleep(CAMERA_MEASURE_S)
+    sim, cpu, sim_cpu = probe.now(), cpu_seconds(pid), cpu_seconds(simulator_pid)
+    wall = time.monotonic() - wall_start
+    shown = browser.script("return window.cameraShown;") - shown_start
+    browser.script("document.getElementById('camera-toggle').click();")
+    return {"camera_rtf": (sim - sim_start) / wall, "camera_sim_cpu": 100.0 * (sim_cpu - sim_cpu_start) / wall,
+            "camera_cpu": 100.0 * (cpu - cpu_start) / wall, "camera_rate": shown / wall}
+
+
 def run(duration_s=MEASURE_S):
     """scripts/bench rows: lab_web with tb3_sim (Week 4 demo) at real time and one connected headless page."""
     result = measure_with_page(duration_s)
@@ -147,6 +181,12 @@ def run(duration_s=MEASURE_S):
         ("lab_web map frame, 384x384 map", result["map_bytes"] / 1024.0, "kB", 64.0, "<="),
         ("lab_web map frames drawn, map every 2 s", result["map_rate"], "frames/s", 0.9 / MAP_PERIOD_S, ">="),
         ("lab_web server CPU with the map and /tf", result["map_cpu"], "% of a core", 10.0, "<="),
+        ("tb3_sim real-time factor at 1x, camera not shown", result["rtf"], "x", RTF_TARGET, ">="),
+        ("tb3_sim CPU, camera not shown", result["sim_cpu"], "% of a core", 100.0, "<="),
+        ("tb3_sim real-time factor at 1x, camera shown", result["camera_rtf"], "x", RTF_TARGET, ">="),
+        ("tb3_sim CPU, 1920x1080 camera shown", result["camera_sim_cpu"], "% of a core", 100.0, "<="),
+        ("lab_web server CPU, camera shown", result["camera_cpu"], "% of a core", 10.0, "<="),
+        ("lab_web camera thumbnails shown", result["camera_rate"], "frames/s", 1.5, ">="),
     ]
 
 

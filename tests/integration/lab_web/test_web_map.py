@@ -4,11 +4,16 @@ the robot and its LiDAR sweep placed through map -> odom -> base_footprint, a co
 arrow and amcl's covariance ellipse where they are, and drags with "2D Pose Estimate", "2D Nav Goal" and "Publish
 Point" publishing what RViz would. No simulator: a probe node publishes the map, the transforms, odometry and one
 scan, so every pixel's place is known exactly."""
+import asyncio
+import json
 import math
 
+import aiohttp
 import pytest
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import Select
 
 from roslab import wait_until
 
@@ -18,6 +23,7 @@ RESOLUTION, ORIGIN, SIZE = 0.1, (-1.0, -1.0), 40
 OCCUPIED_CELL, UNKNOWN_CELL = (15, 5), (30, 30)
 MAP_TO_ODOM = (1.0, 0.5, math.pi / 2)
 ODOM_ROBOT = (0.5, 0.0)
+SECOND_ROBOT = (-0.3, 0.7)
 SCAN_RANGE_M = 1.0
 BLACK, WHITE, UNKNOWN = (0, 0, 0), (255, 255, 255), (0x70, 0x89, 0x86)
 ROBOT_RGB, SCAN_RGB = (0x1F, 0x4E, 0xA3), (0xE0, 0x30, 0x30)
@@ -44,9 +50,26 @@ def occupancy_grid():
             "data": cells}
 
 
+def odometry(x, y, prefix=""):
+    """A robot at (x, y) facing +x in its odom frame (`prefix`: multi_turtlebot3's tf_prefix, "tb3_1/")."""
+    return {"header": {"frame_id": prefix + "odom"}, "child_frame_id": prefix + "base_footprint",
+            "pose": {"pose": {"position": {"x": x, "y": y}, "orientation": {"w": 1.0}}}}
+
+
 def transform(parent, child, x, y, yaw):
     return {"transforms": [{"header": {"frame_id": parent}, "child_frame_id": child, "transform": {
         "translation": {"x": x, "y": y}, "rotation": quaternion(yaw)}}]}
+
+
+def show_scan(browser, probe):
+    """A scan that came before /tf_static named the LiDAR's place is not drawn: send it until one is."""
+    def scan_shown():
+        probe.publish("/scan", "sensor_msgs/LaserScan", {"header": {"frame_id": "base_scan"}, "angle_min": 0.0,
+                                                         "angle_increment": 0.1, "range_min": 0.1, "range_max": 3.5,
+                                                         "ranges": [SCAN_RANGE_M]}, wait_s=1.0)
+        return browser.script("return !!app.state && app.state.scan.length === 1;")
+
+    wait_until(scan_shown, 10, "the page to show the scan", interval_s=0.2)
 
 
 @pytest.fixture(scope="module")
@@ -59,19 +82,10 @@ def page(ros_master, browser, maps_home):
     base, _ = start_web_server(ros_master, "_maps_home:={}".format(maps_home))
     probe = ros_master.probe()
     probe.publish("/tf_static", "tf2_msgs/TFMessage", transform("base_footprint", "base_scan", 0.0, 0.0, 0.0))
-    probe.publish("/odom", "nav_msgs/Odometry", {"header": {"frame_id": "odom"}, "child_frame_id": "base_footprint",
-                                                 "pose": {"pose": {"position": {"x": ODOM_ROBOT[0], "y": ODOM_ROBOT[1]},
-                                                                   "orientation": {"w": 1.0}}}})
+    probe.publish("/odom", "nav_msgs/Odometry", odometry(*ODOM_ROBOT))
     open_page(browser, base, "labView.connected && labView.robot")
 
-    def scan_shown():
-        """A scan that came before /tf_static named the LiDAR's place is not drawn: send it until one is."""
-        probe.publish("/scan", "sensor_msgs/LaserScan", {"header": {"frame_id": "base_scan"}, "angle_min": 0.0,
-                                                         "angle_increment": 0.1, "range_min": 0.1, "range_max": 3.5,
-                                                         "ranges": [SCAN_RANGE_M]}, wait_s=1.0)
-        return browser.script("return app.state.scan.length === 1;")
-
-    wait_until(scan_shown, 10, "the page to show the scan", interval_s=0.2)
+    show_scan(browser, probe)
     before_the_map = browser.script("return labView.fixedFrame;")
     probe.publish("/map", "nav_msgs/OccupancyGrid", occupancy_grid())
     wait_until(lambda: browser.script("return labView.maps;") >= 1, 10, "the page to draw the map")
@@ -83,6 +97,7 @@ def page(ros_master, browser, maps_home):
 
     wait_until(odom_placed, 10, "the page to place odom in the map frame", interval_s=0.2)
     browser.fixed_frame_before_the_map = before_the_map
+    browser.base = base
     browser.probe = probe
     for topic, kind in TOOL_TOPICS.items():
         probe.subscribe(topic, kind)
@@ -111,6 +126,17 @@ def close_to(rgb, expected, tolerance=12):
 def test_the_fixed_frame_is_odom_until_a_map_comes_then_map(page):
     assert page.fixed_frame_before_the_map == "odom"
     assert page.script("return labView.fixedFrame;") == "map"
+
+
+async def first_frame(base):
+    async with aiohttp.ClientSession() as session:
+        async with session.ws_connect(base.replace("http", "ws") + "ws") as socket:
+            return json.loads((await socket.receive(timeout=10)).data)
+
+
+def test_a_page_opened_once_a_map_exists_starts_in_the_map_frame(page):
+    hello = asyncio.run(first_frame(page.base))
+    assert hello["type"] == "hello" and hello["world_frame"] == "map", hello
 
 
 def test_an_occupied_cell_is_black_free_white_unknown_grey_where_the_map_puts_them(page):
@@ -273,3 +299,37 @@ def test_save_map_runs_map_saver_into_the_folder_named_under_home(page, maps_hom
 def test_explore_frontiers_are_drawn_as_their_markers_say(navigation):
     assert pixel(navigation, *FRONTIER_CELLS[0]) == (0, 0, 255)
     assert pixel(navigation, *FRONTIER_SPHERE) == (0, 255, 0)
+
+
+def test_the_robot_picker_moves_the_displays_and_teleop_to_the_picked_namespace(page):
+    """A second robot (multi_turtlebot3's /tb3_1) shows the picker; picking it shows its pose and the arrow key
+    drives its cmd_vel; picking the global one again shows the first robot."""
+    probe = page.probe
+    probe.subscribe("/tb3_1/cmd_vel", "geometry_msgs/Twist")
+    probe.publish("/tb3_1/odom", "nav_msgs/Odometry", odometry(*SECOND_ROBOT, "tb3_1/"), wait_s=0)   # advertised
+    picker = page.driver.find_element(By.ID, "robot-pick")
+    wait_until(picker.is_displayed, 10, "the robot picker (the master is read every 2 s)")
+    assert page.script("return labView.robots;") == {"robots": ["/", "/tb3_1"], "picked": "/"}
+    try:
+        Select(picker).select_by_value("/tb3_1")
+        shown_at(page, "/tb3_1/odom", odometry(*SECOND_ROBOT, "tb3_1/"), SECOND_ROBOT)
+        body = page.driver.find_element(By.TAG_NAME, "body")
+        ActionChains(page.driver).key_down(Keys.ARROW_UP, body).perform()
+        try:
+            probe.wait_for_message("/tb3_1/cmd_vel", 10, lambda twist: twist["linear"]["x"] > 0)
+        finally:
+            ActionChains(page.driver).key_up(Keys.ARROW_UP, body).perform()
+    finally:
+        Select(picker).select_by_value("/")
+    shown_at(page, "/odom", odometry(*ODOM_ROBOT), ODOM_ROBOT)
+    show_scan(page, probe)   # the global robot's sweep again, for the tests that draw it
+    assert page.script("return labView.errors;") == []
+
+
+def shown_at(page, topic, odom, place):
+    """Publish `odom` until the page shows its robot at `place` (lab_web subscribes once the pick reaches it)."""
+    def shown():
+        page.probe.publish(topic, "nav_msgs/Odometry", odom, wait_s=1.0)
+        robot = page.script("return labView.robot;")
+        return robot is not None and math.hypot(robot["x"] - place[0], robot["y"] - place[1]) <= 0.01
+    wait_until(shown, 10, "the page to show the robot of " + topic, interval_s=0.2)

@@ -1,11 +1,13 @@
 """The server panels, in the order their frames go to a page. Adding a panel: a module here with a Panel subclass,
-its page module static/js/panels/<name>.js, and one line in PANELS (and one in the page's list in app.js)."""
+its page module static/js/panels/<name>.js (the page imports the modules the `hello` frame names, in this order),
+and one line in PANELS."""
 from lab_web.panels.camera import CameraPanel
 from lab_web.panels.drive import DrivePanel
 from lab_web.panels.graph import GraphPanel
 from lab_web.panels.map import MapPanel
 from lab_web.panels.nav import NavPanel
 from lab_web.panels.robot import RobotPanel
+from lab_web.panels.robots import RobotsPanel
 from lab_web.panels.save_map import SaveMapPanel
 from lab_web.panels.services import ServicesPanel
 from lab_web.panels.tools import ToolsPanel
@@ -17,6 +19,7 @@ PANELS = (
     MapPanel,
     NavPanel,
     RobotPanel,
+    RobotsPanel,
     TurtlesimPanel,
     GraphPanel,
     CameraPanel,

@@ -34,14 +34,33 @@ class RobotPanel(Panel):
         self._scan_points = []
         self._clock_samples = []
         self._static_transforms = {}
-        self._odom_topic, self._scan_topic = ros.name("odom"), ros.name("scan")
+        self._tf_static = rospy.Subscriber("/tf_static", TFMessage, self._on_tf_static, queue_size=10)
+        self._subscribers = []
+        self._subscribe()
+        ros.follow_robot(self._on_robot_picked)
+
+    def _subscribe(self):
+        """Follow the robot in the context's namespace: its odom and scan."""
+        self._odom_topic, self._scan_topic = self.ros.name("odom"), self.ros.name("scan")
         for topic in (self._odom_topic, self._scan_topic):
-            ros.counts(topic)
+            self.ros.counts(topic)
         self._subscribers = [
             rospy.Subscriber(self._odom_topic, Odometry, self._on_odom, queue_size=1),
             rospy.Subscriber(self._scan_topic, LaserScan, self._on_scan, queue_size=1),
-            rospy.Subscriber("/tf_static", TFMessage, self._on_tf_static, queue_size=10),
         ]
+
+    def _on_robot_picked(self, _old_namespace):
+        """Another robot: forget this one's pose, trail and sweep, and follow the new one's topics."""
+        for subscriber in self._subscribers:
+            subscriber.unregister()
+        for topic in (self._odom_topic, self._scan_topic):
+            self.ros.counts(topic, on=False)
+        with self._lock:
+            self._odom = None
+            self._scan_points = []
+            self.trail.clear()
+        self._subscribe()
+        self._publish_state()
 
     def frames(self, session):
         state = session.lacks("state", self.state)

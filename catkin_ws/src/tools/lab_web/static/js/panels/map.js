@@ -42,11 +42,11 @@ function setup() {
   addLayer(15, drawMap, 'fixed');
 }
 
-function onHello() {
+function onHello(frame) {
   mapImage = null;
   app.mapRegion = null;
   app.fixed = null;
-  labView.fixedFrame = 'odom';
+  labView.fixedFrame = frame.world_frame === 'map' ? 'map' : 'odom';
 }
 
 export default {name: 'map', setup, onHello, frames: {map: onMap, fixed: onFixed}};
