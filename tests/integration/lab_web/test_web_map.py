@@ -5,16 +5,20 @@ arrow and amcl's covariance ellipse where they are, and drags with "2D Pose Esti
 Point" publishing what RViz would. No simulator: a probe node publishes the map, the transforms, odometry and one
 scan, so every pixel's place is known exactly."""
 import asyncio
+import base64
 import json
 import math
 
 import aiohttp
+import cv2
+import numpy
 import pytest
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 
+from lab_web import occupancy
 from roslab import wait_until
 
 from .conftest import open_page, start_web_server
@@ -333,3 +337,51 @@ def shown_at(page, topic, odom, place):
         robot = page.script("return labView.robot;")
         return robot is not None and math.hypot(robot["x"] - place[0], robot["y"] - place[1]) <= 0.01
     wait_until(shown, 10, "the page to show the robot of " + topic, interval_s=0.2)
+
+
+MAPS_FOR_THE_HEAP, SLAM_CELLS = 20, 384
+HEAP_GROWTH_LIMIT_BYTES = 1 << 20
+
+
+def slam_sized_grid(step):
+    """A 384 x 384 map (gmapping's for the course arenas) whose explored square grows with `step`."""
+    cells = numpy.full((SLAM_CELLS, SLAM_CELLS), -1, dtype=numpy.int8)
+    half = 20 + 5 * step
+    low, high = SLAM_CELLS // 2 - half, SLAM_CELLS // 2 + half
+    cells[low:high, low:high] = 0
+    cells[low:high, [low, high - 1]] = 100
+    cells[[low, high - 1], low:high] = 100
+    grid = occupancy_grid()
+    grid["info"].update(width=SLAM_CELLS, height=SLAM_CELLS)
+    grid["data"] = cells.ravel().tolist()
+    return grid
+
+
+def show_map(page, grid):
+    """Publish `grid` as /map and wait until the page has drawn it."""
+    drawn = page.script("return labView.maps;")
+    page.probe.publish("/map", "nav_msgs/OccupancyGrid", grid)
+    wait_until(lambda: page.script("return labView.maps;") > drawn, 10, "the page to draw the map")
+
+
+def pixels_of(base64_png):
+    return cv2.imdecode(numpy.frombuffer(base64.b64decode(base64_png), numpy.uint8), cv2.IMREAD_COLOR)
+
+
+def test_a_growing_slam_map_keeps_the_page_heap_flat_and_the_last_map_is_drawn_cell_for_cell(page):
+    """What a mapping session does to the page, map by map (scripts/bench web_mapping_bench runs a whole session):
+    20 more 384 x 384 maps leave the page's JavaScript heap within 1 MB, and the last drawn is /map's last."""
+    try:
+        for step in range(3):
+            show_map(page, slam_sized_grid(step))
+        heap_before = page.js_heap_bytes()
+        for step in range(3, 3 + MAPS_FOR_THE_HEAP):
+            show_map(page, slam_sized_grid(step))
+        growth = page.js_heap_bytes() - heap_before
+        last = slam_sized_grid(2 + MAPS_FOR_THE_HEAP)
+        expected = pixels_of(occupancy.grid_png(last["data"], SLAM_CELLS, SLAM_CELLS))
+        drawn = pixels_of(page.script("return labView.mapPng();").split(",", 1)[1])
+        assert growth < HEAP_GROWTH_LIMIT_BYTES, growth
+        assert drawn.shape == expected.shape and int(numpy.any(drawn != expected, axis=2).sum()) == 0
+    finally:
+        show_map(page, occupancy_grid())   # the module's own map again, for the tests that read its pixels

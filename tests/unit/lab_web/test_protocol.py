@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from lab_web.commands import MAX_FRAME_BYTES, CommandSpec, ProtocolError, parse_command
-from lab_web.panels import PANELS, command_registry
+from lab_web.panels import PANELS, command_registry, panel_class
 from lab_web.protocol import document, frame
 
 STATIC_DIR = Path(__file__).resolve().parents[3] / "catkin_ws" / "src" / "tools" / "lab_web" / "static"
@@ -123,6 +123,11 @@ def test_every_server_panel_has_its_page_module_and_app_js_lists_none():
         assert "export default {{name: '{}'".format(panel.name) in module.replace("\n  ", "")
     assert "js/panels/" in (static / "app.js").read_text()
     assert not re.search(r"import \w+ from './js/panels/", (static / "app.js").read_text())
+
+
+def test_a_panel_module_without_its_named_panel_class_is_an_error_naming_it():
+    with pytest.raises(ImportError, match="lab_web.panels.base must define one Panel subclass named 'base', found 0"):
+        panel_class("base")
 
 
 def test_a_command_declared_by_two_panels_is_refused_at_start():
