@@ -4,8 +4,8 @@
  * them all. Each panel is one module under js/panels/ (set-up, frame handlers, drawing) matching one server
  * panel (lab_web/panels/); the server's `hello` names the panels, in order, and this file imports each one's
  * module by that name, connects, hands each frame to the panels that handle its type, and routes replies to the
- * panel whose request it answers. Adding a panel: a server module registered in lab_web.panels.PANELS and its
- * page module js/panels/<name>.js (nothing here).
+ * panel whose request it answers. Adding a panel: its server module, its name in lab_web.panels.PANEL_NAMES and
+ * its page module js/panels/<name>.js (nothing here).
  */
 import {$, addMessage, app, labView, updatePanels} from './js/core.js';
 
@@ -18,27 +18,25 @@ const replyHandlers = {};                                                  // re
 const quietFailures = new Set();
 let inbox = Promise.resolve();   // frames are handled one after the other, each after the panels it needs loaded
 
-/** Imports the panels `names` this page does not have yet, in order, and sets each up. */
+/** Imports the panels `names` this page does not have yet (all at once), then sets each up in order. */
 async function loadPanels(names) {
-  for (const name of names) {
-    if (panels.has(name)) continue;
-    if (typeof name !== 'string' || !PANEL_NAME.test(name)) {
-      addMessage(`the server named a panel ${JSON.stringify(name)}, which is not a module name`);
-      continue;
-    }
-    let panel;
-    try {
-      panel = (await import(`./js/panels/${name}.js`)).default;
-    } catch (err) {
-      addMessage(`the page has no module for the server's panel "${name}" (${err.message})`);
-      continue;
-    }
+  const wanted = names.filter((name) => {
+    if (typeof name === 'string' && PANEL_NAME.test(name)) return !panels.has(name);
+    addMessage(`the server named a panel ${JSON.stringify(name)}, which is not a module name`);
+    return false;
+  });
+  const modules = await Promise.all(wanted.map((name) => import(`./js/panels/${name}.js`).then(
+    (module) => module.default,
+    (err) => addMessage(`the page has no module for the server's panel "${name}" (${err.message})`))));
+  wanted.forEach((name, index) => {
+    const panel = modules[index];
+    if (!panel || panels.has(name)) return;
     panels.set(name, panel);
     for (const [type, handler] of Object.entries(panel.frames || {})) (handlers[type] = handlers[type] || []).push(handler);
     Object.assign(replyHandlers, panel.replies || {});
     for (const type of panel.quietFailures || []) quietFailures.add(type);
     if (panel.setup) panel.setup();
-  }
+  });
 }
 
 /* ============================================================ connection */
