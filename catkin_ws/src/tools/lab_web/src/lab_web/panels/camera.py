@@ -22,8 +22,9 @@ RAW_TOPIC = "camera/rgb/image_raw"
 COMPRESSED_TOPIC = RAW_TOPIC + "/compressed"
 CAMERA_PERIOD_S = 0.5
 """Wall seconds from one snapshot to the next (2 Hz); the first comes as soon as a page asks. Each snapshot costs the
-simulator one or two 1920x1080 frames (~40 ms of a core each on an idle machine): 30 a second (a plain subscriber)
-held it at 0.19x under load 13 where it ran at 0.99x without, snapshots at 1 Hz at 0.54x, 4 Hz at 0.30x."""
+simulator one or two 1920x1080 frames. Measured at load 4-8 on 2 cores (Week 4 demo at 1x, 10 s each): a plain
+subscriber took 97 % of a core in tb3_sim and held it at 0.935x; snapshots every 0.5 s 30 % and 1.000x (every 0.25 s
+51 %, 1.000x; none 8-9 %, 0.97-1.00x). Under load 13 a plain subscriber gave 0.19x, snapshots 0.25-0.54x."""
 SNAPSHOT_WAIT_S = 3.0
 """A snapshot waits this long for an image (a robot without a camera sends none) before it subscribes afresh."""
 
