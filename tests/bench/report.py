@@ -17,8 +17,8 @@ sys.path.insert(0, str(BENCH_DIR))
 sys.path.insert(0, str(BENCH_DIR.parent))
 
 BENCHMARKS = ["tb3_sim_bench", "tb3_sim_profile", "camera_bench", "turtlesim_cpu", "load_bench", "web_bench",
-              "line_follower_bench", "grade_bench", "map_bench", "slam_bench", "nav_bench", "explore_bench",
-              "part3_bench", "nav_worlds_bench", "suite_time"]
+              "web_mapping_bench", "line_follower_bench", "grade_bench", "map_bench", "slam_bench", "nav_bench",
+              "explore_bench", "part3_bench", "nav_worlds_bench", "suite_time"]
 OUTPUT = BENCH_DIR.parents[1] / "bench-output" / "bench.md"
 
 

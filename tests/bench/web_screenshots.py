@@ -8,8 +8,11 @@ afterwards:
   drives a short arc (trail and LiDAR dots), a box is dropped by clicking the page's floor, and /odom is
   selected in the topic list so the echo pane shows it;
 - lab_web_turtlesim.png: roslaunch lab_web turtlesim_web.launch; turtle1 draws a figure eight (/turtle1/cmd_vel
-  linear 2, angular +1.5 then -1.5, a few times each) so the pen trail shows.
-Both are 1400 px wide and as tall as the whole page.
+  linear 2, angular +1.5 then -1.5, a few times each) so the pen trail shows;
+- lab_web_navigation.png: navigation in turtlebot3_world at real time (map_server, amcl, move_base: web_bench's
+  navigation_page) with the robot on its way to a goal round the pillars: the map, both costmaps, both plans,
+  the particle cloud, amcl's pose and the goal as the page draws them.
+All are 1400 px wide and as tall as the whole page.
 """
 import sys
 import tempfile
@@ -21,6 +24,8 @@ from selenium.webdriver.common.by import By
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
+from web_bench import navigation_page  # noqa: E402
+
 from roslab import RosMaster, free_port, http_status, wait_for_service, wait_for_topic, wait_until  # noqa: E402
 from roslab.browser import HeadlessBrowser  # noqa: E402
 
@@ -29,6 +34,7 @@ WINDOW_SIZE = (1400, 1000)
 """Browser window to start with: wide enough for the two columns side by side. Before each screenshot the window
 is made as tall as the page (HeadlessBrowser.save_full_page), so the echo pane and the graph below the fold show too."""
 DEMO = ("week4_services", "week4_demo.launch", "gui:=false", "camera_width:=320", "camera_height:=240")
+NAVIGATION_DRIVE_S = 6.0
 BOX_AT = (-0.5, 0.8)
 """World point (m) where the box is dropped by a click on the page's floor."""
 
@@ -147,11 +153,20 @@ def turtlesim_screenshot(path):
         master.shutdown()
 
 
+def navigation_screenshot(path):
+    say("starting turtlebot3_world, map_server, amcl, move_base and lab_web; the robot drives to a goal")
+    with navigation_page() as (browser, _probe, _pid):
+        browser.driver.set_window_size(*WINDOW_SIZE)
+        time.sleep(NAVIGATION_DRIVE_S)   # the robot on its way: the particles gathered, the local plan ahead
+        screenshot(browser, path)
+
+
 def main(argv):
     out_dir = Path(argv[1]) if len(argv) > 1 else REPO_ROOT / "docs" / "images"
     out_dir.mkdir(parents=True, exist_ok=True)
     tb3_sim_screenshot(out_dir / "lab_web_tb3_sim.png")
     turtlesim_screenshot(out_dir / "lab_web_turtlesim.png")
+    navigation_screenshot(out_dir / "lab_web_navigation.png")
     return 0
 
 

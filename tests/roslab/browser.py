@@ -44,6 +44,13 @@ class HeadlessBrowser:
     def script(self, code, *args):
         return self.driver.execute_script(code, *args)
 
+    def js_heap_bytes(self):
+        """The page's used JavaScript heap after a full garbage collection (Chrome DevTools' JSHeapUsedSize)."""
+        self.driver.execute_cdp_cmd("Performance.enable", {})
+        self.driver.execute_cdp_cmd("HeapProfiler.collectGarbage", {})
+        metrics = self.driver.execute_cdp_cmd("Performance.getMetrics", {})["metrics"]
+        return next(metric["value"] for metric in metrics if metric["name"] == "JSHeapUsedSize")
+
     def canvas_pixels(self, element_id):
         """A screenshot of element `element_id` as the browser rendered it on screen, an RGB numpy array (rows,
         columns, 3) in CSS pixels (the headless window's device pixel ratio is 1)."""

@@ -4,12 +4,21 @@ the robot and its LiDAR sweep placed through map -> odom -> base_footprint, a co
 arrow and amcl's covariance ellipse where they are, and drags with "2D Pose Estimate", "2D Nav Goal" and "Publish
 Point" publishing what RViz would. No simulator: a probe node publishes the map, the transforms, odometry and one
 scan, so every pixel's place is known exactly."""
+import asyncio
+import base64
+import json
 import math
 
+import aiohttp
+import cv2
+import numpy
 import pytest
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import Select
 
+from lab_web import occupancy
 from roslab import wait_until
 
 from .conftest import open_page, start_web_server
@@ -18,6 +27,7 @@ RESOLUTION, ORIGIN, SIZE = 0.1, (-1.0, -1.0), 40
 OCCUPIED_CELL, UNKNOWN_CELL = (15, 5), (30, 30)
 MAP_TO_ODOM = (1.0, 0.5, math.pi / 2)
 ODOM_ROBOT = (0.5, 0.0)
+SECOND_ROBOT = (-0.3, 0.7)
 SCAN_RANGE_M = 1.0
 BLACK, WHITE, UNKNOWN = (0, 0, 0), (255, 255, 255), (0x70, 0x89, 0x86)
 ROBOT_RGB, SCAN_RGB = (0x1F, 0x4E, 0xA3), (0xE0, 0x30, 0x30)
@@ -44,9 +54,26 @@ def occupancy_grid():
             "data": cells}
 
 
+def odometry(x, y, prefix=""):
+    """A robot at (x, y) facing +x in its odom frame (`prefix`: multi_turtlebot3's tf_prefix, "tb3_1/")."""
+    return {"header": {"frame_id": prefix + "odom"}, "child_frame_id": prefix + "base_footprint",
+            "pose": {"pose": {"position": {"x": x, "y": y}, "orientation": {"w": 1.0}}}}
+
+
 def transform(parent, child, x, y, yaw):
     return {"transforms": [{"header": {"frame_id": parent}, "child_frame_id": child, "transform": {
         "translation": {"x": x, "y": y}, "rotation": quaternion(yaw)}}]}
+
+
+def show_scan(browser, probe):
+    """A scan that came before /tf_static named the LiDAR's place is not drawn: send it until one is."""
+    def scan_shown():
+        probe.publish("/scan", "sensor_msgs/LaserScan", {"header": {"frame_id": "base_scan"}, "angle_min": 0.0,
+                                                         "angle_increment": 0.1, "range_min": 0.1, "range_max": 3.5,
+                                                         "ranges": [SCAN_RANGE_M]}, wait_s=1.0)
+        return browser.script("return !!app.state && app.state.scan.length === 1;")
+
+    wait_until(scan_shown, 10, "the page to show the scan", interval_s=0.2)
 
 
 @pytest.fixture(scope="module")
@@ -59,19 +86,10 @@ def page(ros_master, browser, maps_home):
     base, _ = start_web_server(ros_master, "_maps_home:={}".format(maps_home))
     probe = ros_master.probe()
     probe.publish("/tf_static", "tf2_msgs/TFMessage", transform("base_footprint", "base_scan", 0.0, 0.0, 0.0))
-    probe.publish("/odom", "nav_msgs/Odometry", {"header": {"frame_id": "odom"}, "child_frame_id": "base_footprint",
-                                                 "pose": {"pose": {"position": {"x": ODOM_ROBOT[0], "y": ODOM_ROBOT[1]},
-                                                                   "orientation": {"w": 1.0}}}})
+    probe.publish("/odom", "nav_msgs/Odometry", odometry(*ODOM_ROBOT))
     open_page(browser, base, "labView.connected && labView.robot")
 
-    def scan_shown():
-        """A scan that came before /tf_static named the LiDAR's place is not drawn: send it until one is."""
-        probe.publish("/scan", "sensor_msgs/LaserScan", {"header": {"frame_id": "base_scan"}, "angle_min": 0.0,
-                                                         "angle_increment": 0.1, "range_min": 0.1, "range_max": 3.5,
-                                                         "ranges": [SCAN_RANGE_M]}, wait_s=1.0)
-        return browser.script("return app.state.scan.length === 1;")
-
-    wait_until(scan_shown, 10, "the page to show the scan", interval_s=0.2)
+    show_scan(browser, probe)
     before_the_map = browser.script("return labView.fixedFrame;")
     probe.publish("/map", "nav_msgs/OccupancyGrid", occupancy_grid())
     wait_until(lambda: browser.script("return labView.maps;") >= 1, 10, "the page to draw the map")
@@ -83,6 +101,7 @@ def page(ros_master, browser, maps_home):
 
     wait_until(odom_placed, 10, "the page to place odom in the map frame", interval_s=0.2)
     browser.fixed_frame_before_the_map = before_the_map
+    browser.base = base
     browser.probe = probe
     for topic, kind in TOOL_TOPICS.items():
         probe.subscribe(topic, kind)
@@ -111,6 +130,17 @@ def close_to(rgb, expected, tolerance=12):
 def test_the_fixed_frame_is_odom_until_a_map_comes_then_map(page):
     assert page.fixed_frame_before_the_map == "odom"
     assert page.script("return labView.fixedFrame;") == "map"
+
+
+async def first_frame(base):
+    async with aiohttp.ClientSession() as session:
+        async with session.ws_connect(base.replace("http", "ws") + "ws") as socket:
+            return json.loads((await socket.receive(timeout=10)).data)
+
+
+def test_a_page_opened_once_a_map_exists_starts_in_the_map_frame(page):
+    hello = asyncio.run(first_frame(page.base))
+    assert hello["type"] == "hello" and hello["world_frame"] == "map", hello
 
 
 def test_an_occupied_cell_is_black_free_white_unknown_grey_where_the_map_puts_them(page):
@@ -273,3 +303,85 @@ def test_save_map_runs_map_saver_into_the_folder_named_under_home(page, maps_hom
 def test_explore_frontiers_are_drawn_as_their_markers_say(navigation):
     assert pixel(navigation, *FRONTIER_CELLS[0]) == (0, 0, 255)
     assert pixel(navigation, *FRONTIER_SPHERE) == (0, 255, 0)
+
+
+def test_the_robot_picker_moves_the_displays_and_teleop_to_the_picked_namespace(page):
+    """A second robot (multi_turtlebot3's /tb3_1) shows the picker; picking it shows its pose and the arrow key
+    drives its cmd_vel; picking the global one again shows the first robot."""
+    probe = page.probe
+    probe.subscribe("/tb3_1/cmd_vel", "geometry_msgs/Twist")
+    probe.publish("/tb3_1/odom", "nav_msgs/Odometry", odometry(*SECOND_ROBOT, "tb3_1/"), wait_s=0)   # advertised
+    picker = page.driver.find_element(By.ID, "robot-pick")
+    wait_until(picker.is_displayed, 10, "the robot picker (the master is read every 2 s)")
+    assert page.script("return labView.robots;") == {"robots": ["/", "/tb3_1"], "picked": "/"}
+    try:
+        Select(picker).select_by_value("/tb3_1")
+        shown_at(page, "/tb3_1/odom", odometry(*SECOND_ROBOT, "tb3_1/"), SECOND_ROBOT)
+        body = page.driver.find_element(By.TAG_NAME, "body")
+        ActionChains(page.driver).key_down(Keys.ARROW_UP, body).perform()
+        try:
+            probe.wait_for_message("/tb3_1/cmd_vel", 10, lambda twist: twist["linear"]["x"] > 0)
+        finally:
+            ActionChains(page.driver).key_up(Keys.ARROW_UP, body).perform()
+    finally:
+        Select(picker).select_by_value("/")
+    shown_at(page, "/odom", odometry(*ODOM_ROBOT), ODOM_ROBOT)
+    show_scan(page, probe)   # the global robot's sweep again, for the tests that draw it
+    assert page.script("return labView.errors;") == []
+
+
+def shown_at(page, topic, odom, place):
+    """Publish `odom` until the page shows its robot at `place` (lab_web subscribes once the pick reaches it)."""
+    def shown():
+        page.probe.publish(topic, "nav_msgs/Odometry", odom, wait_s=1.0)
+        robot = page.script("return labView.robot;")
+        return robot is not None and math.hypot(robot["x"] - place[0], robot["y"] - place[1]) <= 0.01
+    wait_until(shown, 10, "the page to show the robot of " + topic, interval_s=0.2)
+
+
+MAPS_FOR_THE_HEAP, SLAM_CELLS = 20, 384
+HEAP_GROWTH_LIMIT_BYTES = 1 << 20
+
+
+def slam_sized_grid(step):
+    """A 384 x 384 map (gmapping's for the course arenas) whose explored square grows with `step`."""
+    cells = numpy.full((SLAM_CELLS, SLAM_CELLS), -1, dtype=numpy.int8)
+    half = 20 + 5 * step
+    low, high = SLAM_CELLS // 2 - half, SLAM_CELLS // 2 + half
+    cells[low:high, low:high] = 0
+    cells[low:high, [low, high - 1]] = 100
+    cells[[low, high - 1], low:high] = 100
+    grid = occupancy_grid()
+    grid["info"].update(width=SLAM_CELLS, height=SLAM_CELLS)
+    grid["data"] = cells.ravel().tolist()
+    return grid
+
+
+def show_map(page, grid):
+    """Publish `grid` as /map and wait until the page has drawn it."""
+    drawn = page.script("return labView.maps;")
+    page.probe.publish("/map", "nav_msgs/OccupancyGrid", grid)
+    wait_until(lambda: page.script("return labView.maps;") > drawn, 10, "the page to draw the map")
+
+
+def pixels_of(base64_png):
+    return cv2.imdecode(numpy.frombuffer(base64.b64decode(base64_png), numpy.uint8), cv2.IMREAD_COLOR)
+
+
+def test_a_growing_slam_map_keeps_the_page_heap_flat_and_the_last_map_is_drawn_cell_for_cell(page):
+    """What a mapping session does to the page, map by map (scripts/bench web_mapping_bench runs a whole session):
+    20 more 384 x 384 maps leave the page's JavaScript heap within 1 MB, and the last drawn is /map's last."""
+    try:
+        for step in range(3):
+            show_map(page, slam_sized_grid(step))
+        heap_before = page.js_heap_bytes()
+        for step in range(3, 3 + MAPS_FOR_THE_HEAP):
+            show_map(page, slam_sized_grid(step))
+        growth = page.js_heap_bytes() - heap_before
+        last = slam_sized_grid(2 + MAPS_FOR_THE_HEAP)
+        expected = pixels_of(occupancy.grid_png(last["data"], SLAM_CELLS, SLAM_CELLS))
+        drawn = pixels_of(page.script("return labView.mapPng();").split(",", 1)[1])
+        assert growth < HEAP_GROWTH_LIMIT_BYTES, growth
+        assert drawn.shape == expected.shape and int(numpy.any(drawn != expected, axis=2).sum()) == 0
+    finally:
+        show_map(page, occupancy_grid())   # the module's own map again, for the tests that read its pixels

@@ -5,8 +5,10 @@ import math
 import re
 
 import pytest
+import rosgraph
 import rospy
-from gazebo_msgs.srv import GetModelState, GetWorldProperties
+from gazebo_msgs.srv import DeleteModel, GetModelState, GetWorldProperties, SpawnModel
+from geometry_msgs.msg import Point, Pose
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
@@ -22,6 +24,14 @@ ROBOT_RGB = (0x1F, 0x4E, 0xA3)
 WALL_RGB = (0x55, 0x55, 0x55)
 MODEL_RGB = (0xB0, 0x78, 0x40)
 FLOOR_RGB = (0xF4, 0xF4, 0xF0)
+BLUE_BOX_SDF = """<?xml version="1.0"?>
+<sdf version="1.6"><model name="blue_box"><static>true</static><link name="link">
+  <collision name="collision"><geometry><box><size>0.2 0.2 0.3</size></box></geometry></collision>
+  <visual name="visual"><geometry><box><size>0.2 0.2 0.3</size></box></geometry>
+    <material><script><uri>file://media/materials/scripts/gazebo.material</uri><name>Gazebo/Blue</name></script>
+    </material></visual>
+</link></model></sdf>
+"""
 
 
 @pytest.fixture(scope="module")
@@ -156,10 +166,45 @@ def test_the_week4_form_calls_move_service_and_shows_the_reply(page):
         "response_signal: False\nresponse_message: Nothing happened: set request_signal to 'true' to move the robot.")
 
 
-def test_the_camera_thumbnail_shows_while_asked_for(page):
+def lab_web_camera_topics(ros_master):
+    """The camera topics lab_web subscribes to now."""
+    _, subscriptions, _ = rosgraph.Master("/test", master_uri=ros_master.uri).getSystemState()
+    return {topic for topic, nodes in subscriptions if "/camera/" in topic and "/lab_web" in nodes}
+
+
+def thumbnail_centre(page):
+    """(r, g, b) at the centre of the camera thumbnail the page shows, or None before one shows."""
+    centre = page.script("""
+        const image = document.getElementById('camera-img');
+        if (image.hidden || !image.complete || !image.naturalWidth) return null;
+        const canvas = document.createElement('canvas');
+        canvas.width = image.naturalWidth;
+        canvas.height = image.naturalHeight;
+        const context = canvas.getContext('2d');
+        context.drawImage(image, 0, 0);
+        return Array.from(context.getImageData(canvas.width / 2, canvas.height / 2, 1, 1).data.slice(0, 3));""")
+    return tuple(centre) if centre else None
+
+
+def test_the_camera_shows_a_blue_box_ahead_in_true_colour_from_the_compressed_topic_while_asked_for(ros_master,
+                                                                                                 page):
+    """A Gazebo/Blue box 0.8 m ahead of the robot is blue at the thumbnail's centre (red, were the channels
+    swapped); lab_web takes snapshots of the compressed images only while the page shows them."""
+    assert lab_web_camera_topics(ros_master) == set()
+    spawned = rospy.ServiceProxy("/gazebo/spawn_sdf_model", SpawnModel)(
+        model_name="blue_box", model_xml=BLUE_BOX_SDF, initial_pose=Pose(position=Point(0.8, 0.0, 0.0)))
+    assert spawned.success, spawned.status_message
+    try:
+        page.driver.find_element(By.ID, "camera-toggle").click()
+        wait_until(lambda: thumbnail_centre(page) is not None and thumbnail_centre(page)[2] > 100, 10,
+                   "a camera thumbnail of the blue box")
+        wait_until(lambda: lab_web_camera_topics(ros_master) == {"/camera/rgb/image_raw/compressed"}, 5,
+                   "lab_web to take a snapshot of the compressed images (the first one is raw)")
+        red, green, blue = thumbnail_centre(page)
+        assert blue - red >= 60 and blue - green >= 30, (red, green, blue)
+    finally:
+        rospy.ServiceProxy("/gazebo/delete_model", DeleteModel)(model_name="blue_box")
     page.driver.find_element(By.ID, "camera-toggle").click()
-    wait_until(lambda: (page.driver.find_element(By.ID, "camera-img").get_attribute("src") or "").startswith(
-        "data:image/jpeg"), 10, "a camera thumbnail")
-    page.driver.find_element(By.ID, "camera-toggle").click()
+    wait_until(lambda: lab_web_camera_topics(ros_master) == set(), 5, "lab_web to unsubscribe from the camera")
     assert page.console_errors() == []
 

@@ -2,13 +2,16 @@
 the problem (never an exception other than ProtocolError)."""
 import json
 import math
+import re
+from pathlib import Path
 
 import pytest
 
 from lab_web.commands import MAX_FRAME_BYTES, CommandSpec, ProtocolError, parse_command
-from lab_web.panels import PANELS, command_registry
+from lab_web.panels import PANELS, command_registry, panel_class
 from lab_web.protocol import document, frame
 
+STATIC_DIR = Path(__file__).resolve().parents[3] / "catkin_ws" / "src" / "tools" / "lab_web" / "static"
 COMMANDS = {kind: spec for kind, (_, spec) in command_registry().items()}
 
 
@@ -102,13 +105,29 @@ def test_deeply_nested_json_is_refused_not_a_crash():
 def test_every_command_is_declared_once_and_documented():
     assert set(COMMANDS) == {"teleop", "spawn_box", "move_model", "delete_model", "reset_world", "service_fields",
                              "call_service", "echo", "camera", "initial_pose", "nav_goal", "publish_point",
-                             "cancel_goal", "save_map"}
+                             "cancel_goal", "save_map", "pick_robot"}
     text = document(PANELS)
     for kind, spec in COMMANDS.items():
         assert spec.doc and "page -> server  {} {{".format(kind) in text
     for panel in PANELS:
         for kind in panel.FRAMES:
             assert "server -> page  {}  ".format(kind) in text
+
+
+def test_every_server_panel_has_its_page_module_and_app_js_lists_none():
+    """The page imports js/panels/<name>.js for each name `hello` gives: the server's list is the only one."""
+    static = STATIC_DIR
+    for panel in PANELS:
+        assert re.fullmatch(r"[a-z][a-z0-9_]*", panel.name), panel.name
+        module = (static / "js" / "panels" / "{}.js".format(panel.name)).read_text()
+        assert "export default {{name: '{}'".format(panel.name) in module.replace("\n  ", "")
+    assert "js/panels/" in (static / "app.js").read_text()
+    assert not re.search(r"import \w+ from './js/panels/", (static / "app.js").read_text())
+
+
+def test_a_panel_module_without_its_named_panel_class_is_an_error_naming_it():
+    with pytest.raises(ImportError, match="lab_web.panels.base must define one Panel subclass named 'base', found 0"):
+        panel_class("base")
 
 
 def test_a_command_declared_by_two_panels_is_refused_at_start():

@@ -2,32 +2,41 @@
  * app.js: the browser side of lab_web, the web view of the ROS 1 teaching lab (an ES module, no libraries).
  * One WebSocket (/ws on the page's own host) carries JSON text frames; `python3 -m lab_web.protocol` prints
  * them all. Each panel is one module under js/panels/ (set-up, frame handlers, drawing) matching one server
- * panel (lab_web/panels/); this file connects, hands each frame to the panels that handle its type, and
- * routes replies to the panel whose request it answers. Adding a panel: its module and one line in PANELS.
+ * panel (lab_web/panels/); the server's `hello` names the panels, in order, and this file imports each one's
+ * module by that name, connects, hands each frame to the panels that handle its type, and routes replies to the
+ * panel whose request it answers. Adding a panel: its server module, its name in lab_web.panels.PANEL_NAMES and
+ * its page module js/panels/<name>.js (nothing here).
  */
 import {$, addMessage, app, labView, updatePanels} from './js/core.js';
-import camera from './js/panels/camera.js';
-import drive from './js/panels/drive.js';
-import graph from './js/panels/graph.js';
-import map from './js/panels/map.js';
-import nav from './js/panels/nav.js';
-import robot from './js/panels/robot.js';
-import saveMap from './js/panels/save_map.js';
-import services from './js/panels/services.js';
-import tools from './js/panels/tools.js';
-import turtlesim from './js/panels/turtlesim.js';
-import world from './js/panels/world.js';
 
-const PANELS = [world, map, nav, robot, turtlesim, graph, camera, drive, services, tools, saveMap];
 const RECONNECT_MS = 1000;
+const PANEL_NAME = /^[a-z][a-z0-9_]*$/;
 
+const panels = new Map();                                                  // name -> page module, once imported
 const handlers = {hello: [onHello], reply: [onReply], error: [onError]};   // frame type -> handlers
 const replyHandlers = {};                                                  // request type -> handler
 const quietFailures = new Set();
-for (const panel of PANELS) {
-  for (const [type, handler] of Object.entries(panel.frames || {})) (handlers[type] = handlers[type] || []).push(handler);
-  Object.assign(replyHandlers, panel.replies || {});
-  for (const type of panel.quietFailures || []) quietFailures.add(type);
+let inbox = Promise.resolve();   // frames are handled one after the other, each after the panels it needs loaded
+
+/** Imports the panels `names` this page does not have yet (all at once), then sets each up in order. */
+async function loadPanels(names) {
+  const wanted = names.filter((name) => {
+    if (typeof name === 'string' && PANEL_NAME.test(name)) return !panels.has(name);
+    addMessage(`the server named a panel ${JSON.stringify(name)}, which is not a module name`);
+    return false;
+  });
+  const modules = await Promise.all(wanted.map((name) => import(`./js/panels/${name}.js`).then(
+    (module) => module.default,
+    (err) => addMessage(`the page has no module for the server's panel "${name}" (${err.message})`))));
+  wanted.forEach((name, index) => {
+    const panel = modules[index];
+    if (!panel || panels.has(name)) return;
+    panels.set(name, panel);
+    for (const [type, handler] of Object.entries(panel.frames || {})) (handlers[type] = handlers[type] || []).push(handler);
+    Object.assign(replyHandlers, panel.replies || {});
+    for (const type of panel.quietFailures || []) quietFailures.add(type);
+    if (panel.setup) panel.setup();
+  });
 }
 
 /* ============================================================ connection */
@@ -41,11 +50,11 @@ function socketUrl() {
 function connect() {
   const socket = new WebSocket(socketUrl());
   app.socket = socket;
-  socket.addEventListener('open', () => {
-    setConnected(true);
-    for (const panel of PANELS) if (panel.restore) panel.restore();
+  // The page counts as connected from the server's hello on, once the panels it names are set up.
+  socket.addEventListener('message', (event) => {
+    inbox = inbox.then(() => handleFrameText(event.data, socket))
+      .catch((err) => addMessage(`could not handle a frame: ${err.message}`));
   });
-  socket.addEventListener('message', (event) => handleFrameText(event.data));
   // 'error' is always followed by 'close', which does the reconnecting.
   socket.addEventListener('close', () => {
     if (app.socket !== socket) return;
@@ -64,7 +73,8 @@ function setConnected(on) {
   status.classList.toggle('off', !on);
 }
 
-function handleFrameText(text) {
+async function handleFrameText(text, socket) {
+  if (app.socket !== socket) return;   // a frame of a socket that closed while the panels loaded
   let frame;
   try {
     frame = JSON.parse(text);
@@ -72,6 +82,7 @@ function handleFrameText(text) {
     addMessage('the server sent a frame that is not JSON');
     return;
   }
+  if (frame && frame.type === 'hello') await loadPanels(Array.isArray(frame.panels) ? frame.panels : []);
   // Unknown types are ignored, so a newer server does not break the page.
   for (const handler of (frame && handlers[frame.type]) || []) {
     try {
@@ -87,8 +98,11 @@ function handleFrameText(text) {
 function onHello(frame) {
   if (frame.version !== 1) addMessage(`server protocol version ${frame.version}, this page knows version 1`);
   // A new session (maybe a restarted server running other simulators): forget what the old one showed.
-  for (const panel of PANELS) if (panel.onHello) panel.onHello(frame);
+  for (const panel of panels.values()) if (panel.onHello) panel.onHello(frame);
   updatePanels();
+  setConnected(true);
+  // The server keeps no per-page memory across reconnects: the panels ask again for what they showed.
+  for (const panel of panels.values()) if (panel.restore) panel.restore();
 }
 
 function onReply(frame) {
@@ -109,5 +123,4 @@ function onError(frame) {
 
 /* ============================================================ start */
 
-for (const panel of PANELS) if (panel.setup) panel.setup();
 connect();

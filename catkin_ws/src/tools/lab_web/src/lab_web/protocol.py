@@ -5,8 +5,9 @@ declares the commands it accepts (COMMANDS, with their schemas), and `document()
 protocol, the one place it is written down (`python3 -m lab_web.protocol` prints it).
 
 Server -> page, besides the panels' frames:
-  hello  {"version": 1, "world_frame": "odom", "panels": [panel name, ...], "teleop_limits": {target: [linear m/s,
-         angular rad/s]}}   once, on connect
+  hello  {"version": 1, "panels": [panel name, ...] (the page imports js/panels/<name>.js of each, in this order),
+         "world_frame": "map" once a map has come, else "odom", "teleop_limits": {target: [linear m/s, angular
+         rad/s]}}   once, on connect
   reply  {"id": the request's id, "ok": bool, "text": what happened}   once per request
   error  {"text": what was wrong with a frame}   for each bad frame, and a command that failed
 

@@ -31,8 +31,7 @@ class RosBridge:
         self._thread.start()
 
     def hello(self):
-        content = {"version": PROTOCOL_VERSION, "world_frame": "odom",
-                   "panels": [panel.name for panel in self.panels]}
+        content = {"version": PROTOCOL_VERSION, "panels": [panel.name for panel in self.panels]}
         for panel in self.panels:
             content.update(panel.hello())
         return content

@@ -37,21 +37,40 @@ class GraphState(NamedTuple):
     topic_types: Dict[str, str]
 
 
+def canonical_namespace(namespace):
+    """A robot namespace as `RosContext.name` joins it: "" for the global one, else "/tb3_0" (no trailing /)."""
+    return rosgraph.names.canonicalize_name("/" + namespace.strip("/")).rstrip("/") if namespace.strip("/") else ""
+
+
 class RosContext:
-    """`robot_namespace`: the robot whose topics the panels show ("": the global namespace);
-    `service_timeout_s`: how long a service form call may take before it is abandoned."""
+    """`robot_namespace`: the robot whose topics the panels show first ("": the global namespace; a page may pick
+    another, `pick_robot`); `service_timeout_s`: how long a service form call may take before it is abandoned."""
 
     def __init__(self, robot_namespace="", service_timeout_s=DEFAULT_SERVICE_TIMEOUT_S):
         self.service_timeout_s = service_timeout_s
-        self.namespace = rosgraph.names.canonicalize_name(robot_namespace).rstrip("/") if robot_namespace else ""
+        self.namespace = canonical_namespace(robot_namespace)
         self.rates = TopicRates()
         self._lock = threading.Lock()
         self._counted = set()
         self._publishers = {}
+        self._followers = []
 
     def name(self, relative):
         """`relative` in the robot's namespace."""
         return "{}/{}".format(self.namespace, relative)
+
+    def follow_robot(self, callback):
+        """`callback(old namespace)` runs after each change of the robot (its topics are then `name`'s)."""
+        self._followers.append(callback)
+
+    def pick_robot(self, namespace):
+        """Show and drive the robot in `namespace` from now on (every page: the server follows one robot)."""
+        namespace = canonical_namespace(namespace)
+        with self._lock:
+            old, self.namespace = self.namespace, namespace
+        if old != namespace:
+            for callback in self._followers:
+                callback(old)
 
     def count(self, topic):
         """A message arrived on `topic`, which a panel subscribes to anyway (the graph panel's rate)."""

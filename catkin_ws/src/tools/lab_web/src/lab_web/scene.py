@@ -173,13 +173,17 @@ class Trail:
             last_x, last_y = self._points[-1]
             step = math.hypot(x - last_x, y - last_y)
             if step >= TRAIL_JUMP_M:
-                self._points.clear()
-                self._generation += 1
-                self._added = 0
+                self.clear()
             elif step < TRAIL_STEP_M:
                 return
         self._points.append([_mm(x), _mm(y)])
         self._added += 1
+
+    def clear(self):
+        """Start a new trail (another robot is followed, or this one jumped): pages replace theirs."""
+        self._points.clear()
+        self._generation += 1
+        self._added = 0
 
     def since(self, cursor):
         """(reset, points, new cursor) for a page that holds the trail up to `cursor` (None: nothing yet).

@@ -39,7 +39,7 @@ class TeleopGate:
                     self._active[target] = (0.0, 0.0, now_s - COMMAND_TIMEOUT_S, owner)
 
     def stop_all(self, now_s):
-        """Every driven target gets zero at the next tick (the server is shutting down)."""
+        """Every driven target gets zero at the next tick (the server is shutting down, another robot is picked)."""
         with self._lock:
             for target, (_, _, _, owner) in list(self._active.items()):
                 self._active[target] = (0.0, 0.0, now_s - COMMAND_TIMEOUT_S, owner)

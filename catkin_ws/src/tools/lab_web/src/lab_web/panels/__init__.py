@@ -1,30 +1,41 @@
-"""The server panels, in the order their frames go to a page. Adding a panel: a module here with a Panel subclass,
-its page module static/js/panels/<name>.js, and one line in PANELS (and one in the page's list in app.js)."""
-from lab_web.panels.camera import CameraPanel
-from lab_web.panels.drive import DrivePanel
-from lab_web.panels.graph import GraphPanel
-from lab_web.panels.map import MapPanel
-from lab_web.panels.nav import NavPanel
-from lab_web.panels.robot import RobotPanel
-from lab_web.panels.save_map import SaveMapPanel
-from lab_web.panels.services import ServicesPanel
-from lab_web.panels.tools import ToolsPanel
-from lab_web.panels.turtlesim import TurtlesimPanel
-from lab_web.panels.world import WorldPanel
+"""The server panels, in the order their frames go to a page.
 
-PANELS = (
-    WorldPanel,
-    MapPanel,
-    NavPanel,
-    RobotPanel,
-    TurtlesimPanel,
-    GraphPanel,
-    CameraPanel,
-    DrivePanel,
-    ServicesPanel,
-    ToolsPanel,
-    SaveMapPanel,
+Adding a panel `<name>`: its server module lab_web/panels/<name>.py with one Panel subclass whose `name` is
+"<name>", its page module static/js/panels/<name>.js (the page imports the modules the `hello` frame names, in this
+order), and "<name>" in PANEL_NAMES: one line."""
+import importlib
+import inspect
+
+from lab_web.panels.base import Panel
+
+PANEL_NAMES = (
+    "world",
+    "map",
+    "nav",
+    "robot",
+    "robots",
+    "turtlesim",
+    "graph",
+    "camera",
+    "drive",
+    "services",
+    "tools",
+    "save_map",
 )
+
+
+def panel_class(name):
+    """The Panel subclass of module lab_web.panels.<name>, the one whose `name` is `name`."""
+    module = importlib.import_module("lab_web.panels." + name)
+    found = [cls for _, cls in inspect.getmembers(module, inspect.isclass)
+             if issubclass(cls, Panel) and cls.__module__ == module.__name__ and cls.name == name]
+    if len(found) != 1:
+        raise ImportError("lab_web.panels.{} must define one Panel subclass named {!r}, found {}".format(
+            name, name, len(found)))
+    return found[0]
+
+
+PANELS = tuple(panel_class(name) for name in PANEL_NAMES)
 
 
 def command_registry(panels=PANELS):

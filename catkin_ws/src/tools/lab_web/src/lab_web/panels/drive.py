@@ -29,6 +29,7 @@ class DrivePanel(Panel):
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._loop, daemon=True, name="lab_web_teleop")
         self._thread.start()
+        ros.follow_robot(self._on_robot_picked)
 
     def hello(self):
         return {"teleop_limits": {target: list(limits) for target, limits in TELEOP_LIMITS.items()}}
@@ -42,16 +43,22 @@ class DrivePanel(Panel):
         while not self._stop.wait(1.0 / PUBLISH_RATE_HZ):
             self._publish()
 
-    def _publish(self):
+    def _publish(self, robot_topic=None):
+        """Publish what the gate says now; the robot's commands go to `robot_topic` (default: the robot's)."""
         for target, linear, angular in self.gate.tick(now_s()):
-            publisher = self.ros.publisher(self.ros.name("cmd_vel") if target == "robot" else "/turtle1/cmd_vel",
-                                           Twist)
+            robot_topic = robot_topic or self.ros.name("cmd_vel")
+            publisher = self.ros.publisher(robot_topic if target == "robot" else "/turtle1/cmd_vel", Twist)
             twist = Twist()
             twist.linear.x, twist.angular.z = linear, angular
             try:
                 publisher.publish(twist)
             except rospy.ROSException:
                 return   # shutting down
+
+    def _on_robot_picked(self, old_namespace):
+        """Another robot: the one being driven stops first (every target gets zero once, as on shutdown)."""
+        self.gate.stop_all(now_s())
+        self._publish("{}/cmd_vel".format(old_namespace))
 
     def disconnect(self, owner):
         self.gate.disconnect(owner, now_s())

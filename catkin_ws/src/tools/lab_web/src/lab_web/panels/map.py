@@ -39,6 +39,11 @@ class MapPanel(Panel):
         ros.counts("/map")
         self._tf_subscribers = []   # from the first map on: before it, odom is the fixed frame and /tf unneeded
 
+    def hello(self):
+        """The fixed frame as the page starts: the map's frame once a map has come (its `fixed` frame follows)."""
+        with self._lock:
+            return {"world_frame": self.fixed.value["frame"]}
+
     def frames(self, session):
         return self.lacking(session, ("fixed", self.fixed), ("map", self.map))
 

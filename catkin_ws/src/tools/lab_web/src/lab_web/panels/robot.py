@@ -34,14 +34,35 @@ class RobotPanel(Panel):
         self._scan_points = []
         self._clock_samples = []
         self._static_transforms = {}
-        self._odom_topic, self._scan_topic = ros.name("odom"), ros.name("scan")
+        self._tf_static = rospy.Subscriber("/tf_static", TFMessage, self._on_tf_static, queue_size=10)
+        self._subscribers = []
+        self._subscribe()
+        ros.follow_robot(self._on_robot_picked)
+
+    def _subscribe(self):
+        """Follow the robot in the context's namespace: its odom and scan (messages of other topics still on their
+        way are dropped by the callbacks)."""
+        with self._lock:
+            self._odom_topic, self._scan_topic = self.ros.name("odom"), self.ros.name("scan")
         for topic in (self._odom_topic, self._scan_topic):
-            ros.counts(topic)
+            self.ros.counts(topic)
         self._subscribers = [
-            rospy.Subscriber(self._odom_topic, Odometry, self._on_odom, queue_size=1),
-            rospy.Subscriber(self._scan_topic, LaserScan, self._on_scan, queue_size=1),
-            rospy.Subscriber("/tf_static", TFMessage, self._on_tf_static, queue_size=10),
+            rospy.Subscriber(self._odom_topic, Odometry, self._on_odom, self._odom_topic, queue_size=1),
+            rospy.Subscriber(self._scan_topic, LaserScan, self._on_scan, self._scan_topic, queue_size=1),
         ]
+
+    def _on_robot_picked(self, _old_namespace):
+        """Another robot: forget this one's pose, trail and sweep, and follow the new one's topics."""
+        for subscriber in self._subscribers:
+            subscriber.unregister()
+        for topic in (self._odom_topic, self._scan_topic):
+            self.ros.counts(topic, on=False)
+        self._subscribe()
+        with self._lock:
+            self._odom = None
+            self._scan_points = []
+            self.trail.clear()
+        self._publish_state()
 
     def frames(self, session):
         state = session.lacks("state", self.state)
@@ -56,19 +77,21 @@ class RobotPanel(Panel):
         with self._lock:
             return self._odom[0] if self._odom else None
 
-    def _on_odom(self, odom):
+    def _on_odom(self, odom, topic):
         pose = odom.pose.pose
         robot = scene.Pose2D(pose.position.x, pose.position.y, scene.yaw_of(pose.orientation.z, pose.orientation.w))
         with self._lock:
+            if topic != self._odom_topic:
+                return   # the robot followed before a pick: its message was on its way
             self._odom = (robot, odom.twist.twist.linear.x, odom.twist.twist.angular.z, odom.child_frame_id)
             self.trail.add(robot.x, robot.y)
         self.ros.count(self._odom_topic)
         self._publish_state()
 
-    def _on_scan(self, scan):
+    def _on_scan(self, scan, topic):
         self.ros.count(self._scan_topic)
         with self._lock:
-            if self._odom is None:
+            if self._odom is None or topic != self._scan_topic:
                 return
             robot, _, _, base_frame = self._odom
             offset = scene.sensor_offset(self._static_transforms, base_frame, scan.header.frame_id)
@@ -77,6 +100,8 @@ class RobotPanel(Panel):
         points = scene.scan_points(scan.ranges, scan.angle_min, scan.angle_increment, scan.range_min,
                                    scan.range_max, scene.compose(robot, offset))
         with self._lock:
+            if topic != self._scan_topic:
+                return
             self._scan_points = points
         self._publish_state()
 

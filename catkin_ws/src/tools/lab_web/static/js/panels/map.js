@@ -37,16 +37,27 @@ function drawMap(ctx) {
   if (mapImage) drawGridImage(ctx, mapImage.image, mapImage.frame);
 }
 
+/** Test hook: the map the page draws, as a PNG data URL of one pixel per cell (null before a map). */
+function mapPng() {
+  if (!mapImage) return null;
+  const canvas = document.createElement('canvas');
+  canvas.width = mapImage.image.naturalWidth;
+  canvas.height = mapImage.image.naturalHeight;
+  canvas.getContext('2d').drawImage(mapImage.image, 0, 0);
+  return canvas.toDataURL('image/png');
+}
+
 function setup() {
   labView.maps = 0;
+  labView.mapPng = mapPng;
   addLayer(15, drawMap, 'fixed');
 }
 
-function onHello() {
+function onHello(frame) {
   mapImage = null;
   app.mapRegion = null;
   app.fixed = null;
-  labView.fixedFrame = 'odom';
+  labView.fixedFrame = frame.world_frame === 'map' ? 'map' : 'odom';
 }
 
 export default {name: 'map', setup, onHello, frames: {map: onMap, fixed: onFixed}};
