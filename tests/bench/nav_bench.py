@@ -12,7 +12,9 @@ One session: turtlebot3_world.launch at FACTOR (headless) and tests/integration/
   the median time to the goal over the shortest path at the speed limit (0.26 m/s; target 2.0, a choice:
   the robot turns toward each goal and slows near it), the closest the LiDAR saw anything to the body;
 - CPU of amcl (target 15 % of a core) and move_base (25 %) at real time, measured as CPU seconds per second of
-  sim time over the goals: the nodes' work is paced by sim time (scans, 10 Hz control, 5 Hz planning).
+  sim time over the goals: the nodes' work is paced by sim time (scans, 10 Hz control, 5 Hz planning);
+- the highest of SWEEP_FACTORS at which SWEEP_GOALS goals are all reached, each factor on a fresh stack, going up
+  until one misses (target 10, the issue's factor for a whole exercise).
 `run()` returns the rows [(name, value, unit, target, comparison)] for scripts/bench's table.
 """
 import math
@@ -32,8 +34,9 @@ from roslab import RosMaster, nav_goals  # noqa: E402
 from roslab.graph import node_pid  # noqa: E402
 from roslab.processes import cpu_seconds  # noqa: E402
 
-FACTOR = 10
-GOALS, SEED = 40, 30
+FACTOR = 1
+GOALS, SEED = 20, 30
+SWEEP_FACTORS, SWEEP_GOALS = (2, 3, 5, 10), 3
 MAX_VEL_M_S = 0.26
 AMCL_OFFSET = (0.3, math.radians(15.0))
 DRIVE_M_S, DRIVE_SIM_S = 0.2, 10.0
@@ -68,16 +71,35 @@ def _median(values):
     return statistics.median(values) if values else math.inf
 
 
-def run(goals=GOALS, factor=FACTOR):
+def _session(factor, work):
+    """Start the stack at `factor` on a fresh master, run work(master, probe, cells), shut everything down."""
     cells = turtlebot3_world_cells()
     master = RosMaster(Path(tempfile.mkdtemp(prefix="nav_bench_")))
     os.environ["ROS_MASTER_URI"] = master.uri   # this process calls /gazebo/get_model_state itself
     try:
-        probe = start_navigation(master, master.workdir, cells, factor, TOPICS)
-        amcl_m, amcl_rad = nav_goals.amcl_error_after_drive(probe, *AMCL_OFFSET, DRIVE_M_S, DRIVE_SIM_S)
-        goal_list, runs, cpu = random_goal_runs(master, probe, cells, goals)
+        return work(master, start_navigation(master, master.workdir, cells, factor, TOPICS), cells)
     finally:
         master.shutdown()
+
+
+def highest_factor(factors=SWEEP_FACTORS, goals=SWEEP_GOALS):
+    """The highest factor (0 when none) from which every one of `goals` goals was reached, trying in order."""
+    best = 0
+    for factor in factors:
+        print(f"  factor {factor}:", flush=True)
+        runs = _session(factor, lambda master, probe, cells: random_goal_runs(master, probe, cells, goals)[1])
+        if not all(r["text"] == "Goal reached." for r in runs):
+            break
+        best = factor
+    return best
+
+
+def run(goals=GOALS, factor=FACTOR):
+    def measure(master, probe, cells):
+        return nav_goals.amcl_error_after_drive(probe, *AMCL_OFFSET, DRIVE_M_S, DRIVE_SIM_S), \
+            random_goal_runs(master, probe, cells, goals)
+    (amcl_m, amcl_rad), (goal_list, runs, cpu) = _session(factor, measure)
+    fastest = highest_factor()
     reached = [r for r in runs if r["text"] == "Goal reached."]
     print(f"    amcl after 2 m: {amcl_m:.3f} m, {math.degrees(amcl_rad):.2f} deg", flush=True)
     pairs = [(g, r) for g, r in zip(goal_list, runs) if r["text"] == "Goal reached."]
@@ -97,6 +119,7 @@ def run(goals=GOALS, factor=FACTOR):
         ("amcl: yaw error after 2 m from 0.3 m / 15 deg off", math.degrees(amcl_rad), "deg", 3.0, "<="),
         ("amcl CPU at real time (per sim second, navigating)", cpu["/amcl"], "%", 15.0, "<="),
         ("move_base CPU at real time (per sim second, navigating)", cpu["/move_base"], "%", 25.0, "<="),
+        (f"navigation: highest real-time factor with {SWEEP_GOALS} goals all reached", fastest, "x", 10, ">="),
     ]
 
 

@@ -1,14 +1,15 @@
 """amcl (imports rospy): the particle filter of lab_nav.localization on /scan, odometry TF and the map.
 
-Node `amcl`. The map comes from the `static_map` service (asked every 0.5 s until map_server answers; the node
-does nothing else until then) or, with ~use_map_topic, from `map`. Each scan: the odometry pose (odom ->
-base frame) at the scan's stamp is looked up (scans whose TF is not there yet are dropped); after update_min_d
-or update_min_a of motion (or once after start, a new initial pose, global localisation or
-request_nomotion_update) the filter moves, weights and resamples, `amcl_pose` (latched, frame map, stamp = the
-scan's) and `particlecloud` (latched) are published; on every scan TF map -> odom is sent, stamped scan
-stamp + transform_tolerance. `initialpose` in frame map (or an empty frame, with a warning) re-initialises the
-particles; other frames are ignored with a warning. The last pose is written back to ~initial_pose_x/y/a and
-~initial_cov_xx/yy/aa every 1 / save_pose_rate s.
+Node `amcl`. The map comes from the `static_map` service (asked every 0.5 s until map_server answers; the node does
+nothing else until then) or, with ~use_map_topic, from `map`. Each scan: the odometry pose (odom -> base frame) at
+the scan's stamp is looked up (scans whose TF is not there yet are dropped); after update_min_d or update_min_a of
+motion (or once after start, a new initial pose, global localisation or request_nomotion_update) the filter moves,
+weights and resamples, `amcl_pose` (latched, frame map, stamp = the scan's) and `particlecloud` (latched: built
+only while someone subscribes, and sent to each new subscriber from the last update, which looks the same from
+outside) are published; on every scan TF map -> odom is sent, stamped scan stamp + transform_tolerance.
+`initialpose` in frame map (or an empty frame, with a warning) re-initialises the particles; other frames are
+ignored with a warning. The last pose is written back to ~initial_pose_x/y/a and ~initial_cov_xx/yy/aa every 1 /
+save_pose_rate s.
 """
 import math
 import threading
@@ -42,6 +43,19 @@ def covariance_message(covariance):
     return out
 
 
+class CloudOnSubscribe(rospy.SubscribeListener):
+    """Sends the last filter update's cloud to each new /particlecloud subscriber, as the latch would have."""
+
+    def __init__(self, node):
+        super().__init__()
+        self._node = node
+
+    def peer_subscribe(self, topic_name, topic_publish, peer_publish):
+        message = self._node.cloud_message()
+        if message is not None:
+            peer_publish(message)
+
+
 class AmclNode:
     def __init__(self, config):
         self.config = config
@@ -57,7 +71,9 @@ class AmclNode:
         self._tf_out = tf2_ros.TransformBroadcaster()
         self._laser_poses = {}
         self._pose_pub = rospy.Publisher("amcl_pose", PoseWithCovarianceStamped, queue_size=2, latch=True)
-        self._cloud_pub = rospy.Publisher("particlecloud", PoseArray, queue_size=2, latch=True)
+        self._cloud = None   # (particles, stamp) of the last filter update
+        self._cloud_pub = rospy.Publisher("particlecloud", PoseArray, queue_size=2, latch=True,
+                                          subscriber_listener=CloudOnSubscribe(self))
 
     # --- the map ------------------------------------------------------------------------------------------
     def set_map(self, grid):
@@ -191,10 +207,21 @@ class AmclNode:
         publish_unless_shut_down(self._pose_pub.publish, message)
 
     def _publish_cloud(self, particles, stamp):
+        """/particlecloud, built only while someone subscribes: a PoseArray of up to max_particles genpy Poses
+        took a fifth of amcl's CPU, inside the scan callback, before map->odom went out."""
+        self._cloud = (particles.copy(), stamp)
+        if self._cloud_pub.get_num_connections():
+            publish_unless_shut_down(self._cloud_pub.publish, self.cloud_message())
+
+    def cloud_message(self):
+        """The last update's PoseArray, or None before the first."""
+        cloud = self._cloud
+        if cloud is None:
+            return None
         message = PoseArray()
-        message.header.frame_id, message.header.stamp = self.config.global_frame_id, stamp
-        message.poses = [poses.to_pose(p) for p in particles]
-        publish_unless_shut_down(self._cloud_pub.publish, message)
+        message.header.frame_id, message.header.stamp = self.config.global_frame_id, cloud[1]
+        message.poses = [poses.to_pose(p) for p in cloud[0]]
+        return message
 
     def _save_pose(self):
         rate = self.config.save_pose_rate
