@@ -21,6 +21,10 @@ COSTMAPS = {"global": "move_base/global_costmap/costmap", "local": "move_base/lo
 PLANS = {"global": "move_base/NavfnROS/plan", "local": "move_base/DWAPlannerROS/local_plan"}
 COSTMAP_PERIOD_S = 0.5
 """A costmap's picture is redrawn at most twice a second (move_base patches it at 5-10 Hz)."""
+NAV_PERIOD_S = 0.2
+"""The plans, particles, amcl pose, goal and frontiers go out at most 5 times a second: the local plan alone changes
+at 10 Hz and amcl's cloud holds thousands of poses, and each change re-encoded them all for every page (JSON was
+43 % of the server's CPU with navigation at real time)."""
 MAX_PLAN_POINTS = 2000
 MAX_PARTICLES = 5000
 MARKER_KINDS = {Marker.POINTS: "points", Marker.SPHERE: "sphere"}
@@ -35,6 +39,24 @@ def _frame(header):
     return header.frame_id.lstrip("/")
 
 
+class Throttle:
+    """At most one publication per `period_s` of wall time; a change within it is left pending for the next look."""
+
+    def __init__(self, period_s):
+        self.period_s = period_s
+        self.last = None
+        self.pending = False
+
+    def ready(self, force=False):
+        """Whether to publish now (always when `force`); if not, the change is pending."""
+        now = now_s()
+        if not force and self.last is not None and now - self.last < self.period_s:
+            self.pending = True
+            return False
+        self.last, self.pending = now, False
+        return True
+
+
 class Costmap:
     """One costmap as cells, patched by its updates."""
 
@@ -42,8 +64,7 @@ class Costmap:
         self.info = None
         self.frame = ""
         self.cells = None
-        self.encoded_at = None
-        self.pending = False     # patched since its last picture
+        self.throttle = Throttle(COSTMAP_PERIOD_S)
 
     def replace(self, grid):
         self.info, self.frame = grid.info, _frame(grid.header)
@@ -88,6 +109,7 @@ class NavPanel(Panel):
         self._nav = {"plans": {}, "particles": None, "amcl": None, "goal": None, "frontiers": []}
         self._frontiers = {}     # (ns, id) -> the page's marker
         self.nav = Versioned()
+        self._nav_throttle = Throttle(NAV_PERIOD_S)
         self._subscribers = []
         for name, topic in COSTMAPS.items():
             self._subscribers += [
@@ -108,8 +130,10 @@ class NavPanel(Panel):
     def frames(self, session):
         with self._lock:
             for name, costmap in self._costmaps.items():
-                if costmap.pending:
+                if costmap.throttle.pending:
                     self._publish_costmap(name)   # a patch that came within COSTMAP_PERIOD_S of the last picture
+            if self._nav_throttle.pending:
+                self._publish_nav()
         return self.lacking(session, *(("costmap", versioned, "costmap " + name)
                                        for name, versioned in self.costmaps.items()), ("nav", self.nav))
 
@@ -125,12 +149,12 @@ class NavPanel(Panel):
 
     def _publish_costmap(self, name, force=False):
         costmap = self._costmaps[name]
-        now = now_s()
-        if not force and costmap.encoded_at is not None and now - costmap.encoded_at < COSTMAP_PERIOD_S:
-            costmap.pending = True
-            return
-        costmap.encoded_at, costmap.pending = now, False
-        self.costmaps[name].set(dict(costmap.content(), name=name))
+        if costmap.throttle.ready(force):
+            self.costmaps[name].set(dict(costmap.content(), name=name))
+
+    def _publish_nav(self):
+        if self._nav_throttle.ready():
+            self.nav.set(dict(self._nav))
 
     def _set(self, key, value):
         with self._lock:
@@ -138,7 +162,7 @@ class NavPanel(Panel):
                 self._nav["plans"] = dict(self._nav["plans"], **value)
             else:
                 self._nav[key] = value
-            self.nav.set(dict(self._nav))
+            self._publish_nav()
 
     def _on_plan(self, path, name):
         points = [[round(stamped.pose.position.x, 3), round(stamped.pose.position.y, 3)]
