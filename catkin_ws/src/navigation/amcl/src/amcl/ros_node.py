@@ -22,6 +22,7 @@ from nav_msgs.msg import OccupancyGrid
 from nav_msgs.srv import SetMap, SetMapResponse
 from nav_ros import grids, poses
 from nav_ros.params import ParamError
+from nav_ros.subscribe import SendOnSubscribe
 from sensor_msgs.msg import LaserScan
 from std_srvs.srv import Empty, EmptyResponse
 
@@ -43,19 +44,6 @@ def covariance_message(covariance):
     return out
 
 
-class CloudOnSubscribe(rospy.SubscribeListener):
-    """Sends the last filter update's cloud to each new /particlecloud subscriber, as the latch would have."""
-
-    def __init__(self, node):
-        super().__init__()
-        self._node = node
-
-    def peer_subscribe(self, topic_name, topic_publish, peer_publish):
-        message = self._node.cloud_message()
-        if message is not None:
-            peer_publish(message)
-
-
 class AmclNode:
     def __init__(self, config):
         self.config = config
@@ -73,7 +61,7 @@ class AmclNode:
         self._pose_pub = rospy.Publisher("amcl_pose", PoseWithCovarianceStamped, queue_size=2, latch=True)
         self._cloud = None   # (particles, stamp) of the last filter update
         self._cloud_pub = rospy.Publisher("particlecloud", PoseArray, queue_size=2, latch=True,
-                                          subscriber_listener=CloudOnSubscribe(self))
+                                          subscriber_listener=SendOnSubscribe(self.cloud_message))
 
     # --- the map ------------------------------------------------------------------------------------------
     def set_map(self, grid):

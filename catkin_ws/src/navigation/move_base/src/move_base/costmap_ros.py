@@ -25,6 +25,7 @@ from geometry_msgs.msg import Point32, PolygonStamped
 from map_msgs.msg import OccupancyGridUpdate
 from nav_msgs.msg import OccupancyGrid
 from nav_ros import grids, poses
+from nav_ros.subscribe import SendOnSubscribe
 from sensor_msgs.msg import LaserScan
 
 from lab_nav.costmap.layered import LayeredCostmap, changed_box
@@ -33,19 +34,6 @@ from lab_nav.maps.geometry import MapGeometry
 from stop_request.closed_topic import publish_unless_shut_down
 
 TF_TIMEOUT_S = 0.2
-
-
-class FullGridOnSubscribe(rospy.SubscribeListener):
-    """Sends the current full grid to each new subscriber of `costmap` (costmap_2d's connect callback)."""
-
-    def __init__(self, costmap):
-        super().__init__()
-        self._costmap = costmap
-
-    def peer_subscribe(self, topic_name, topic_publish, peer_publish):
-        message = self._costmap.grid_message()
-        if message is not None:
-            peer_publish(message)
 
 
 class CostmapRos:
@@ -68,7 +56,7 @@ class CostmapRos:
         self._map_received = threading.Event()
         ns = f"~{self.name}/"
         self._grid_pub = rospy.Publisher(ns + "costmap", OccupancyGrid, queue_size=1,
-                                         subscriber_listener=FullGridOnSubscribe(self))
+                                         subscriber_listener=SendOnSubscribe(self.grid_message))
         self._update_pub = rospy.Publisher(ns + "costmap_updates", OccupancyGridUpdate, queue_size=1)
         self._footprint_pub = rospy.Publisher(ns + "footprint", PolygonStamped, queue_size=1)
 
