@@ -2,9 +2,10 @@
 
 The filter's parameters become lab_nav's AmclParams; the node's own (frames, transform_tolerance, initial
 pose and covariance, map source, save_pose_rate) stay in AmclNodeConfig. laser_model_type other than
-likelihood_field, odom_model_type other than diff/diff-corrected and non-zero recovery_alpha_slow/_fast are
-not implemented: the node warns and uses what it has. `~seed` (int, default unset = from the OS) seeds the filter
-so that two runs with the same inputs give the same particles.
+likelihood_field, odom_model_type other than diff/diff-corrected (omni, omni-corrected) and non-zero
+recovery_alpha_slow/_fast are not implemented: the node warns and uses what it has (the diff model).
+`~seed` (int, default unset = from the OS) seeds the filter so that two runs with the same inputs give the same
+particles.
 """
 import math
 from dataclasses import dataclass
@@ -12,11 +13,10 @@ from dataclasses import dataclass
 from nav_ros.params import read
 
 from lab_nav.localization.likelihood_field import LaserParams
-from lab_nav.localization.motion_model import OdometryNoise
+from lab_nav.localization.motion_model import SPREADS, OdometryNoise
 from lab_nav.localization.particle_filter import AmclParams
 
 SUPPORTED_LASER_MODELS = ("likelihood_field",)
-SUPPORTED_ODOM_MODELS = ("diff", "diff-corrected")
 
 
 @dataclass(frozen=True)
@@ -41,8 +41,9 @@ def read_config(warn):
     if laser_model not in SUPPORTED_LASER_MODELS:
         warn(f"laser_model_type {laser_model!r} is not implemented here: using likelihood_field")
     odom_model = read("odom_model_type", "diff", str)
-    if odom_model not in SUPPORTED_ODOM_MODELS:
+    if odom_model not in SPREADS:
         warn(f"odom_model_type {odom_model!r} is not implemented here: using diff")
+        odom_model = "diff"
     if read("recovery_alpha_slow", 0.001) > 0 or read("recovery_alpha_fast", 0.1) > 0:
         warn("recovery_alpha_slow/fast (random particles on a weak match) are not implemented here: no recovery")
     laser = LaserParams(max_beams=read("laser_max_beams", 30, int), max_range=read("laser_max_range", -1.0),
@@ -53,7 +54,8 @@ def read_config(warn):
     params = AmclParams(min_particles=read("min_particles", 100, int), max_particles=read("max_particles", 5000, int),
                         kld_err=read("kld_err", 0.01), kld_z=read("kld_z", 0.99),
                         update_min_d=read("update_min_d", 0.2), update_min_a=read("update_min_a", math.pi / 6.0),
-                        resample_interval=read("resample_interval", 2, int), laser=laser, noise=noise)
+                        resample_interval=read("resample_interval", 2, int), odom_model=odom_model, laser=laser,
+                        noise=noise)
     seed = read("seed", None, int)
     return AmclNodeConfig(
         filter=params, seed=seed,

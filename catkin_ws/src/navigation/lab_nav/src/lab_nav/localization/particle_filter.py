@@ -33,6 +33,7 @@ class AmclParams:
     update_min_d: float = 0.2
     update_min_a: float = 0.2
     resample_interval: int = 1
+    odom_model: str = "diff"
     laser: LaserParams = field(default_factory=LaserParams)
     noise: OdometryNoise = field(default_factory=OdometryNoise)
 
@@ -119,7 +120,7 @@ class ParticleFilter:
         """
         if self._last_update_odom is not None:
             self.particles = motion_model.sample(self.particles, self._last_update_odom, odom_pose,
-                                                 self.params.noise, self.rng)
+                                                 self.params.noise, self.rng, self.params.odom_model)
         self._last_update_odom = tuple(odom_pose)
         self._force_update = False
         laser = self.params.laser
