@@ -65,3 +65,13 @@ def test_a_new_goal_preempts_and_cancel_stops_the_robot(nav):
     nav.sleep_sim(1.0, 60)
     twist = nav.wait_for_message("/odom", 10)["twist"]["twist"]
     assert abs(twist["linear"]["x"]) < 0.01 and abs(twist["angular"]["z"]) < 0.01
+
+
+def test_a_new_particlecloud_subscriber_gets_the_latched_cloud_once(nav):
+    """The robot stands (the cancel above), so amcl sends no new cloud: a subscriber that comes now gets the last
+    one, latched, exactly once (the original publishes it latched on each filter update)."""
+    nav.subscribe("/particlecloud", "geometry_msgs/PoseArray")
+    nav.sleep_sim(2.0, 60)
+    clouds = [entry["msg"] for entry in nav.take("/particlecloud")]
+    assert len(clouds) == 1
+    assert clouds[0]["header"]["frame_id"] == "map" and 500 <= len(clouds[0]["poses"]) <= 3000

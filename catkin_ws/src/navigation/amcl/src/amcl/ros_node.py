@@ -4,9 +4,9 @@ Node `amcl`. The map comes from the `static_map` service (asked every 0.5 s unti
 nothing else until then) or, with ~use_map_topic, from `map`. Each scan: the odometry pose (odom -> base frame) at
 the scan's stamp is looked up (scans whose TF is not there yet are dropped); after update_min_d or update_min_a of
 motion (or once after start, a new initial pose, global localisation or request_nomotion_update) the filter moves,
-weights and resamples, `amcl_pose` (latched, frame map, stamp = the scan's) and `particlecloud` (latched: built
-only while someone subscribes, and sent to each new subscriber from the last update, which looks the same from
-outside) are published; on every scan TF map -> odom is sent, stamped scan stamp + transform_tolerance.
+weights and resamples, `amcl_pose` (latched, frame map, stamp = the scan's) and `particlecloud` (latched, all
+particles, written from the filter's array only for a subscriber: nav_ros.particle_cloud) are published; on
+every scan TF map -> odom is sent, stamped scan stamp + transform_tolerance.
 `initialpose` in frame map (or an empty frame, with a warning) re-initialises the particles; other frames are
 ignored with a warning. The last pose is written back to ~initial_pose_x/y/a and ~initial_cov_xx/yy/aa every 1 /
 save_pose_rate s.
@@ -22,7 +22,7 @@ from nav_msgs.msg import OccupancyGrid
 from nav_msgs.srv import SetMap, SetMapResponse
 from nav_ros import grids, poses
 from nav_ros.params import ParamError
-from nav_ros.subscribe import SendOnSubscribe
+from nav_ros.particle_cloud import ParticleCloud
 from sensor_msgs.msg import LaserScan
 from std_srvs.srv import Empty, EmptyResponse
 
@@ -59,9 +59,7 @@ class AmclNode:
         self._tf_out = tf2_ros.TransformBroadcaster()
         self._laser_poses = {}
         self._pose_pub = rospy.Publisher("amcl_pose", PoseWithCovarianceStamped, queue_size=2, latch=True)
-        self._cloud = None   # (particles, stamp) of the last filter update
-        self._cloud_pub = rospy.Publisher("particlecloud", PoseArray, queue_size=2, latch=True,
-                                          subscriber_listener=SendOnSubscribe(self.cloud_message))
+        self._cloud_pub = rospy.Publisher("particlecloud", PoseArray, queue_size=2, latch=True)
 
     # --- the map ------------------------------------------------------------------------------------------
     def set_map(self, grid):
@@ -176,7 +174,8 @@ class AmclNode:
                 resampled = pf.update(odom, laser, np.asarray(scan.ranges, dtype=float), angles, scan.range_max)
                 estimate = pf.estimate()
                 self._map_to_odom = poses.compose(estimate.pose, poses.inverse(odom))
-                self._publish_cloud(pf.particles, scan.header.stamp)
+                publish_unless_shut_down(self._cloud_pub.publish, ParticleCloud(
+                    pf.particles.copy(), self.config.global_frame_id, scan.header.stamp))
                 if resampled or self._last_estimate is None:
                     self._publish_pose(estimate, scan.header.stamp)
             map_to_odom = self._map_to_odom
@@ -193,23 +192,6 @@ class AmclNode:
         message.pose.covariance = covariance_message(estimate.covariance)
         self._last_estimate = estimate
         publish_unless_shut_down(self._pose_pub.publish, message)
-
-    def _publish_cloud(self, particles, stamp):
-        """/particlecloud, built only while someone subscribes: a PoseArray of up to max_particles genpy Poses
-        took a fifth of amcl's CPU, inside the scan callback, before map->odom went out."""
-        self._cloud = (particles.copy(), stamp)
-        if self._cloud_pub.get_num_connections():
-            publish_unless_shut_down(self._cloud_pub.publish, self.cloud_message())
-
-    def cloud_message(self):
-        """The last update's PoseArray, or None before the first."""
-        cloud = self._cloud
-        if cloud is None:
-            return None
-        message = PoseArray()
-        message.header.frame_id, message.header.stamp = self.config.global_frame_id, cloud[1]
-        message.poses = [poses.to_pose(p) for p in cloud[0]]
-        return message
 
     def _save_pose(self):
         rate = self.config.save_pose_rate

@@ -3,8 +3,8 @@ import rospy
 
 
 class SendOnSubscribe(rospy.SubscribeListener):
-    """Sends `make_message()` to each new subscriber of the topic, unless it returns None: the latest state as a
-    latched topic would give it (amcl's particle cloud), or a whole grid before its updates (costmap_2d)."""
+    """Sends `make_message()` to each new subscriber of the topic, unless it returns None: a whole grid before
+    its updates, as costmap_2d's connect callback does."""
 
     def __init__(self, make_message):
         super().__init__()
