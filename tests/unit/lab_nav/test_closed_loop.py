@@ -8,6 +8,7 @@ from integration.navigation import world_map
 
 from lab_nav.costmap.footprint import WAFFLE_FOOTPRINT, Footprint
 from lab_nav.costmap.layered import CostmapParams, LayeredCostmap
+from lab_nav.maps.geometry import MapGeometry
 from lab_nav.planning import global_planner
 from lab_nav.planning.local_planner import DwaParams, DwaPlanner
 from roslab import nav_goals
@@ -19,6 +20,7 @@ PARAMS = DwaParams()
 PLAN_EVERY = 2            # move_base plans at 5 Hz, controls at 10 Hz
 STEPS_PER_CYCLE = 10      # kinematics in 0.01 s steps within each 0.1 s control period
 MAX_CYCLES = 600          # 60 s of sim time
+LOCAL_CELLS = 60          # turtlebot3's local costmap: 3 x 3 m at 0.05 m
 FROM_GOAL, TO_GOAL = (1.925, -1.425), (0.275, -0.925)   # nav_worlds_bench's goals 1 and 2 (seed 30)
 
 
@@ -36,6 +38,17 @@ def _clearance(shapes, pose):
     return min(float(world_map._distance(shape, points[:, 0], points[:, 1]).min()) for shape in shapes)
 
 
+def _local_costmap(cells, footprint, pose):
+    """move_base's 3 x 3 m local costmap round the robot, from the map's cells (where its scans would mark)."""
+    col, row = (int(v) - LOCAL_CELLS // 2 for v in GEOMETRY.world_to_cell(pose[0], pose[1]))
+    window = MapGeometry(GEOMETRY.resolution, LOCAL_CELLS, LOCAL_CELLS, GEOMETRY.origin_x + col * GEOMETRY.resolution,
+                         GEOMETRY.origin_y + row * GEOMETRY.resolution)
+    costmap = LayeredCostmap(window, CostmapParams(footprint))
+    costmap.set_map(window, cells[row:row + LOCAL_CELLS, col:col + LOCAL_CELLS])
+    costmap.update()
+    return costmap
+
+
 def _plan(navfn, costs, pose, goal):
     cells = navfn.plan(costs, tuple(int(v) for v in GEOMETRY.world_to_cell(pose[0], pose[1])),
                        tuple(int(v) for v in GEOMETRY.world_to_cell(goal[0], goal[1])), GEOMETRY.resolution)
@@ -48,9 +61,6 @@ def test_dwa_rounds_the_end_of_a_thin_wall_keeping_clear_of_it():
     cells, shapes = _walls()
     footprint = Footprint.padded(WAFFLE_FOOTPRINT)
     costs = nav_goals.global_costs(GEOMETRY, cells)
-    local = LayeredCostmap(GEOMETRY, CostmapParams(footprint))
-    local.set_map(GEOMETRY, cells)
-    local.update()
     navfn, dwa = global_planner.Navfn(), DwaPlanner(PARAMS, footprint)
     goal = (*TO_GOAL, 0.0)
     pose, velocity, closest = np.array([*FROM_GOAL, math.pi]), (0.0, 0.0), math.inf
@@ -59,7 +69,7 @@ def test_dwa_rounds_the_end_of_a_thin_wall_keeping_clear_of_it():
             plan = _plan(navfn, costs, pose, goal)
         nearest = int(np.argmin(np.hypot(*(plan - pose[:2]).T)))
         dwa.set_plan(plan[nearest:], goal)
-        command = dwa.compute(tuple(pose), velocity, local)
+        command = dwa.compute(tuple(pose), velocity, _local_costmap(cells, footprint, pose))
         if command.reached:
             break
         velocity = (command.v, command.w) if command.valid else (0.0, 0.0)
