@@ -210,19 +210,29 @@ class LayeredCostmap:
         self.version += 1
 
     def cost_at(self, x, y):
-        """Master cost (uint8 array) at world points; NO_INFORMATION outside the grid.
+        """Master cost (uint8 array) at world points; NO_INFORMATION outside the grid."""
+        g = self.geometry
+        return self.cost_at_cells((np.asarray(x, dtype=float) - g.origin_x) / g.resolution,
+                                  (np.asarray(y, dtype=float) - g.origin_y) / g.resolution)
+
+    def cost_at_cells(self, col, row):
+        """Master cost at points given in cells from the origin corner (col = (x - origin_x) / resolution, row
+        likewise; fractional), NO_INFORMATION outside the grid.
 
         One lookup in the grid framed by a border of NO_INFORMATION cells: indices are clipped onto the border,
         so a point anywhere outside reads 255 without a mask (the local planner looks up ~10^5 points a cycle).
+        The clip comes before the truncation to int: on the values it leaves (>= 0) truncation is floor, and
+        every point left of or below the grid lands on the border.
         """
         g = self.geometry
         if self._framed is None or self._framed[0] is not self.costs:
             framed = np.full((g.height + 2, g.width + 2), NO_INFORMATION, dtype=np.uint8)
             framed[1:-1, 1:-1] = self.costs
             self._framed = (self.costs, framed.ravel())
-        col = np.clip(np.floor((np.asarray(x, dtype=float) - g.origin_x) / g.resolution) + 1, 0, g.width + 1)
-        row = np.clip(np.floor((np.asarray(y, dtype=float) - g.origin_y) / g.resolution) + 1, 0, g.height + 1)
-        return self._framed[1][row.astype(np.intp) * (g.width + 2) + col.astype(np.intp)]
+        col, row = np.asarray(col), np.asarray(row)
+        col = np.clip(col + col.dtype.type(1), 0, g.width + 1).astype(np.intp)
+        row = np.clip(row + row.dtype.type(1), 0, g.height + 1).astype(np.intp)
+        return self._framed[1][row * (g.width + 2) + col]
 
 def changed_box(old, new):
     """(col, row, width, height) of the smallest box holding every cell that differs, or None when none does."""

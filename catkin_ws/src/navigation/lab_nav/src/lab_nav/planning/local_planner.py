@@ -92,6 +92,7 @@ class DwaPlanner:
     def __init__(self, params, footprint):
         self.params = params
         self._points = np.vstack(([0.0, 0.0], footprint.outline(FOOTPRINT_OUTLINE_STEP_M)))   # centre first
+        self._points32 = self._points.astype(np.float32)
         self._plan = np.zeros((0, 2))
         self._goal = None
 
@@ -142,9 +143,16 @@ class DwaPlanner:
     def footprint_costs(self, poses, costmap):
         """(M, K) highest cost under the footprint outline at each pose, and whether the pose collides (its
         centre on an inscribed cell or the outline on a lethal one): one costmap lookup of every point."""
-        c, s = np.cos(poses[..., 2])[..., None], np.sin(poses[..., 2])[..., None]
-        ox, oy = self._points[:, 0], self._points[:, 1]
-        costs = costmap.cost_at(poses[..., 0, None] + c * ox - s * oy, poses[..., 1, None] + s * ox + c * oy)
+        g = costmap.geometry
+        # in cells from the costmap's origin, float32 (1e-5 of a cell): one multiply-add per point and axis on
+        # ~10^5 points, half the memory traffic of float64
+        scale = 1.0 / g.resolution
+        yaw = poses[..., 2, None]
+        c, s = (np.cos(yaw) * scale).astype(np.float32), (np.sin(yaw) * scale).astype(np.float32)
+        col = ((poses[..., 0, None] - g.origin_x) * scale).astype(np.float32)
+        row = ((poses[..., 1, None] - g.origin_y) * scale).astype(np.float32)
+        ox, oy = self._points32[:, 0], self._points32[:, 1]
+        costs = costmap.cost_at_cells(col + c * ox - s * oy, row + s * ox + c * oy)
         centre, outline = costs[..., 0], costs[..., 1:].max(axis=-1)
         return np.maximum(outline, centre), (centre >= INSCRIBED) | (outline >= LETHAL)
 
