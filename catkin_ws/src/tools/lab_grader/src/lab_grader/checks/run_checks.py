@@ -164,7 +164,7 @@ def line_judge(expect, observation):
         problems.append("expected a mean distance to the line of {}, it was {:.3f} m".format(
             expect.mean_distance_m.describe("m"), mean))
     if expect.max_distance_m is not None and not expect.max_distance_m.contains(largest):
-        problems.append("expected never to be farther than {} from the line, it got {:.3f} m away".format(
+        problems.append("expected its largest distance to the line to be {}, it got {:.3f} m away".format(
             expect.max_distance_m.describe("m"), largest))
     summary = "progressed {:.2f} m along the line, mean distance {:.3f} m, largest {:.3f} m; {}".format(
         followed.progress_m, mean, largest, left)
