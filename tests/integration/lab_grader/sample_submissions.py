@@ -114,9 +114,9 @@ REFERENCES = ((REFERENCE, MISTAKES), (PART5_REFERENCE, PART5_MISTAKES), (PART6_R
 
 SELF_CONTAINED = tuple(name for name, changes in MISTAKES.items()
                        if not any(PLACEHOLDER.search(new) for replacements in changes.values()
-                                  for _, new in replacements)) + tuple(FROM_SCRATCH)
-"""The samples that need no `fill` (every one but those whose hostile code needs the test's paths and addresses):
-what a benchmark can grade as a class."""
+                                  for _, new in replacements)) + ("student_style", "course_template")
+"""The Week 4 samples that need no `fill` (every one but those whose hostile code needs the test's paths and
+addresses): what a benchmark can grade as a class."""
 
 
 def make_submission(name: str, folder: Path, fill: Optional[Dict[str, str]] = None) -> Path:
