@@ -92,7 +92,8 @@ PART5_MISTAKES = {
     "part5_careless": {"nodes/action_server.py": [
         ("        self.save(image_message, path)\n", "        path.write_text(image_message.format)\n")],
                        "nodes/search_server.py": [
-        ("                self.server.publish_feedback(SearchFeedback(travelled))\n", ""),
+        ("                                         on_sweep=lambda travelled: self.server.publish_feedback(\n"
+         "                                             SearchFeedback(travelled)),\n", ""),
         ("        self.server.publish_feedback(SearchFeedback(result.total_distance_travelled))\n", ""),
         ("            rospy.loginfo(text)\n", "            rospy.loginfo(text)\n"
                                              "            self.robot.drive(plan.velocity, 0.0)  # keep searching\n")]},
