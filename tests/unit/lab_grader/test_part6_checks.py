@@ -81,7 +81,7 @@ def test_a_run_without_any_world_is_refused(tmp_path):
     def no_world(data):
         del data["world"]
         del data["simulator_args"]
-    with pytest.raises(SuiteError, match=r"runs\[0\]\.world: missing: a run needs a world"):
+    with pytest.raises(SuiteError, match=r"runs\[0\]: a run needs a robot: the suite has no world"):
         load_changed(tmp_path, no_world)
 
 

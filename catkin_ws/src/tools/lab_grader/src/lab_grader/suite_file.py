@@ -85,23 +85,31 @@ judged on the one recording (lab_grader.checks.run_checks documents the quantiti
 
     runs:
       - node: colour_search.py        # the course's file name (rosrun <package> colour_search.py)
-        duration_s: 60                # sim s recorded from the robot's first motion on
+        duration_s: 75                # sim s recorded from the robot's first motion on
         start_s: 60                   # optional (60): sim s from the reset for the robot's first motion (else the
                                       #   recording ends there: a node that never moves the robot)
-        world: tuos_simulations/worlds/coloured_pillars.yaml   # optional (the suite's world): this run's world, a
-                                      #   tb3_sim world name or <package>/<path of a world file in it>
-        simulator_args: {x_pos: 0}    # optional (the suite's): this run's tb3_sim.launch args
+      - node: line_follower.py
+        duration_s: 45
+        world: tuos_simulations/worlds/line_following.yaml   # optional (the suite's world, which a suite with runs
+                                      #   must have): this run's world, a tb3_sim world name or <package>/<path of
+                                      #   a world file in it>; the grader starts a simulator of its own for it
+        simulator_args: {x_pos: 2.4, y_pos: -2.5, yaw: 3.14}   # optional (the suite's): this run's tb3_sim args
     checks:
       - id: faces_blue
         title: ...
         weight: 40
         run: colour_search.py         # one of runs[].node
-        expect:                       # one or more kinds of RUN_EXPECT_KINDS
+        expect:                       # one or more of the kinds in RUN_EXPECT_PARSERS
           stops_facing:               # it stops (still >= still_s after it first moved) facing each of `faces`
             faces: [blue]
             landmarks: {blue: [0.6, -0.6], red: [0.6, 0.6]}   # named points (x, y in m) it may face
             tolerance_deg: 10         # |bearing from the true heading to the point|
             still_s: 1.0
+      - id: follows_the_line
+        title: ...
+        weight: 30
+        run: line_follower.py
+        expect:
           line:                       # a line on the floor: a chain of cubic Beziers (start, then 3 points each)
             points: [[2.38, -2.5], ...]
             progress_m: {min: 4}      # arc length reached before it first left the line (> leave_m from it)
@@ -572,8 +580,9 @@ def _runs(convert, value, where, world) -> Tuple[RunSpec, ...]:
         duration_s = entry.get("duration_s", convert.positive, required=True)
         start_s = entry.get("start_s", convert.positive, default=DEFAULT_START_S)
         run_world = entry.get("world", convert.text)
-        if run_world is None and world is None:
-            entry.fail(entry.where("world"), "missing: a run needs a world (its own or the suite's)")
+        if world is None:
+            convert.fail(item_where, "a run needs a robot: the suite has no world (a run may name another world "
+                                     "than the suite's, which the grader then starts for it)")
         args = entry.get("simulator_args", lambda v, w: convert.fields(v, w, convert.scalar))
         result.append(RunSpec(node, float(duration_s), run_world, None if args is None else tuple(args.items()),
                               float(start_s)))
