@@ -15,7 +15,8 @@ log) and the submission gets the checks' verdicts as far as they got; the batch 
 A run (a node that serves nothing but drives the robot: Part 6) is graded so: the runner resets the robot, waits
 until it rests and creates the exercise's ready file; only then does the grader start the student's node (found by
 the course's file name, else by a script whose name shares a word with it), and the runner records the robot for
-the run's duration. A run's node that ends by itself with exit status 0 (its job done) has not crashed. An exercise
+the run's duration. A run's node that ends by itself with exit status 0 (its job done) has not crashed; the
+runner is told (the exercise's ended file) and ends the recording once the robot has rested for a while. An exercise
 in another world (or with other simulator arguments) than the one running gets a simulator of its own: the running
 one is stopped, with the check runner that was connected to it, and the next starts in its place.
 
@@ -256,8 +257,11 @@ class SubmissionGrader:
                 else:
                     ready = out_dir / "ready-{}".format(number)
                     ready.unlink(missing_ok=True)
-                    ended, server = self._watch_run(runner, json.dumps(dict(command, ready=str(ready))), ready,
-                                                    checks_file, lambda start_node=server: start_node(number))
+                    node_ended = out_dir / "ended-{}".format(number)
+                    node_ended.unlink(missing_ok=True)
+                    ended, server = self._watch_run(
+                        runner, json.dumps(dict(command, ready=str(ready), ended=str(node_ended))), ready, node_ended,
+                        checks_file, lambda start_node=server: start_node(number))
                 crashed = server is not None and not server.running() and (exercise.run is None
                                                                              or not server.wait(0).ok)
                 node.update(running_at_end=server is not None and server.running(),
@@ -302,10 +306,11 @@ class SubmissionGrader:
         return node, start
 
     @staticmethod
-    def _watch_run(runner, command, ready, checks_file, start):
+    def _watch_run(runner, command, ready, node_ended, checks_file, start):
         """Give the runner a run's `command`, start the node (`start()`) once the runner has created `ready` (the
         robot reset and at rest), and wait for `checks_file` as watch_checks does; the node may end by itself
-        meanwhile (its job done). Returns (watch_checks's answer, the node's SandboxProcess or None)."""
+        meanwhile (its job done: the file `node_ended` then tells the runner, which ends the recording once the
+        robot rests). Returns (watch_checks's answer, the node's SandboxProcess or None)."""
         if not runner.send_line(command):
             return runner.wait(RUNNER_EXIT_S), None
         deadline = time.monotonic() + READY_TIMEOUT_S
@@ -316,7 +321,7 @@ class SubmissionGrader:
                 return runner.wait(0), None
             time.sleep(POLL_S)
         server = start()
-        return wait_for_checks(runner, server, checks_file, server_may_end=True), server
+        return wait_for_checks(runner, server, checks_file, ended=node_ended), server
     def _worlds(self):
         """[(world, the ids of the checks graded in it)] in the suite's order, for the report's pictures."""
         worlds = {}
@@ -421,17 +426,20 @@ def watch_checks(runner, server, command, checks_file):
     return wait_for_checks(runner, server, checks_file)
 
 
-def wait_for_checks(runner, server, checks_file, server_may_end=False):
+def wait_for_checks(runner, server, checks_file, ended=None):
     """Wait until the runner has written `checks_file`, at most CHECKS_TIMEOUT_S. If the student's node `server`
-    exits meanwhile (unless `server_may_end` and it exited with status 0), stop the runner at once (SIGINT: it
-    writes the results it has, the rest "not run"); past the deadline, kill it. Returns None while the runner serves
-    on, else its RunResult (it ended, or was stopped)."""
+    exits meanwhile, stop the runner at once (SIGINT: it writes the results it has, the rest "not run"), unless
+    `ended` is given and the node exited with status 0 (a run's node whose job is done): then create the file
+    `ended`, which tells the runner. Past the deadline, kill the runner. Returns None while the runner serves on,
+    else its RunResult (it ended, or was stopped)."""
     deadline = time.monotonic() + CHECKS_TIMEOUT_S
     while not checks_file.exists():
         if not runner.running():
             return runner.wait(0)
-        if not server.running() and not (server_may_end and server.wait(0).ok):
-            return runner.stop()
+        if not server.running():
+            if ended is None or not server.wait(0).ok:
+                return runner.stop()
+            ended.touch()
         if time.monotonic() > deadline:
             return runner.wait(0)
         time.sleep(POLL_S)

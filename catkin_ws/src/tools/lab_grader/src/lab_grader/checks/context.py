@@ -36,7 +36,9 @@ the student's nodes. It
 
 - records one run (`observe_run`): once the robot is prepared, it tells the grader to start the student's node
   (it creates the file `ready_path`, when set) and records the true motion and the interference from then until
-  the run's duration after the robot first moved (in sim time), or its start_s without motion.
+  the run's duration after the robot first moved (in sim time), or its start_s without motion; once the grader
+  says the node has ended by itself (the file `ended_path` exists) and the robot has rested for RESTED_AFTER_END_S,
+  the recording ends there (nothing more can happen: the course's colour search exits after its last pillar).
 
 A suite without a world has no robot (`robot=False`): no /odom, /scan or /cmd_vel, nothing to reset, ROS time is
 wall time, and observations carry no samples.
@@ -83,6 +85,7 @@ SERVER_ERROR_BYTES = re.compile(r"(responded with an error: )b(['\"])(.*)\2$", r
 POLL_WALL_S = 0.2              # service discovery polls the master this often
 STATE_NAMES = {getattr(GoalStatus, name): name for name in GOAL_STATES}   # 3 -> "SUCCEEDED"
 WAIT_SLICE_WALL_S = 0.01
+RESTED_AFTER_END_S = 2.0       # a run ends early once its node has ended and the robot has rested this long (sim s)
 
 
 def message_dict(message):
@@ -250,6 +253,7 @@ class GradingContext:
         self._sim_seen = (None, time.monotonic())   # (last sim time seen, wall time it changed)
         self._window = None               # the ground-truth Mark of the current check's start (prepare)
         self.ready_path = None            # a run's node is started by the grader once this file exists
+        self.ended_path = None            # the grader creates this file when a run's node has ended by itself
         if not robot:
             return
         self._truth = TruthClient(ground_truth)
@@ -623,8 +627,19 @@ class GradingContext:
                 first_motion.append(latest.t)
             return bool(first_motion)
 
+        def over():
+            if not (self.ended_path and os.path.exists(self.ended_path)):
+                return False
+            latest = self._truth.latest
+            if latest is None or not is_still(latest):
+                rested_since[:] = []
+                return False
+            rested_since[:] = rested_since or [latest.t]
+            return latest.t - rested_since[0] >= RESTED_AFTER_END_S
+
+        rested_since = []
         if self._wait_sim(started_s + start_s, moved):
-            self._wait_sim(first_motion[0] + duration_s)
+            self._wait_sim(first_motion[0] + duration_s, over)
         samples = ((origin,) if origin is not None else ()) + self._truth.since(recording).samples
         return RunObservation(started_s, samples, tuple(self._findings()))
 

@@ -17,7 +17,8 @@ as it ends (the grader shows the latest in its progress line).
 `--serve` (instead of --out) is the grader's way, which runs each exercise's node alone: one runner (one rospy node,
 one ground-truth connection, made while the first exercise's node starts) grades exercise after exercise, each on
 a line of its stdin, `{"exercise": FILE, "out": results.json, "log": exercise.log}` in JSON (`serve`; a run's
-exercise adds `"ready": FILE`, created once the robot is reset and at rest: the grader then starts the node); it writes
+exercise adds `"ready": FILE`, created once the robot is reset and at rest: the grader then starts the node, and
+`"ended": FILE`, which the grader creates when the node has ended by itself); it writes
 that exercise's results file and check lines, then reads the next line, and ends at the end of its input. Starting
 a runner per exercise cost its imports, init_node and connections each time (2-4 s of wall time an exercise on a
 loaded machine).
@@ -165,13 +166,13 @@ def serve(suite, make_context, lines, check_timeout_s=None, log=print):
         try:
             command = json.loads(line)
             exercise, out, log_path = command["exercise"], Path(command["out"]), Path(command["log"])
-            ready = command.get("ready")
+            ready, ended = command.get("ready"), command.get("ended")
             part = exercise_suite(suite, exercise)
         except (ValueError, KeyError, TypeError) as error:
             raise SuiteError("not a command {{\"exercise\", \"out\", \"log\"}}: {!r} ({}: {})".format(
                 line.strip(), type(error).__name__, error)) from None
         if not isinstance(context, Exception):
-            context.ready_path = ready
+            context.ready_path, context.ended_path = ready, ended
         with open(log_path, "a") as exercise_log:
             document = run_suite(part, shared_context, check_timeout_s,
                                  log=lambda text: print(text, file=exercise_log, flush=True))
