@@ -5,6 +5,10 @@
   the simulator, and per exercise finding its node and its checks, summed here);
 - wall time to grade one Part 5 submission (the lab's week5_actions: CameraSweep and Search, suites/part5.yaml) at
   factor 1 (target <= 90 s), and its stages;
+- wall time to grade one Part 6 submission (the lab's week6_vision: colour search and line follower,
+  suites/part6.yaml) at factor 1 (target <= 180 s: its two runs alone are 120 s of sim time, 75 s of colour search
+  and 45 s of line following after the robot's first motion, and the line follower's world needs a simulator of
+  its own), and its stages;
 - how many check verdicts of the distinct samples (tests/integration/lab_grader/sample_submissions.py: every
   mistake and every self-contained hostile one) are the same at factor 2 as at factor 1: all of them, or the faster
   factor would not be used;
@@ -29,8 +33,10 @@ CLASS_SIZE = 20
 FAST_FACTOR = 2
 ONE_TARGET_S = {1: 60.0, 2: 35.0}
 PART5_TARGET_S = 90.0
+PART6_TARGET_S = 180.0
 CLASS_TARGET_S = 600.0
-STAGES = ("building (and starting the simulator)", "starting the simulator", "finding its node", "checks")
+STAGES = ("building (and starting the simulator)", "starting the simulator", "starting its world", "finding its node",
+          "checks")
 
 
 def grade(folder, out, factor, jobs, suite="week4"):
@@ -68,6 +74,10 @@ def run(class_size=CLASS_SIZE):
         seconds, results = grade(work / "part5", work / "part5-out", 1, jobs=1, suite="part5")
         rows.append(("grade one Part 5 submission (reference), factor 1", seconds, "s", PART5_TARGET_S, "<="))
         print_stages("part5, factor 1", results["part5_reference"])
+        make_submission("part6_reference", work / "part6")
+        seconds, results = grade(work / "part6", work / "part6-out", 1, jobs=1, suite="part6")
+        rows.append(("grade one Part 6 submission (reference), factor 1", seconds, "s", PART6_TARGET_S, "<="))
+        print_stages("part6, factor 1", results["part6_reference"])
         if not class_size:
             return rows
         for name in SELF_CONTAINED:

@@ -14,9 +14,11 @@ from .hostile_code import FORKS_CHILDREN, PRINTS_MEGABYTES, REACHES_NETWORK, SNO
 HERE = Path(__file__).resolve().parent
 REFERENCE = HERE.parents[2] / "catkin_ws" / "src" / "exercises" / "week4_services"
 PART5_REFERENCE = HERE.parents[2] / "catkin_ws" / "src" / "exercises" / "week5_actions"
+PART6_REFERENCE = HERE.parents[2] / "catkin_ws" / "src" / "exercises" / "week6_vision"
 # Written from scratch, not from the reference: {name: the package folder}.
 FROM_SCRATCH = {"student_style": HERE / "student_style" / "week4_alice",
-                "course_template": HERE / "student_style" / "week4_course_template"}
+                "course_template": HERE / "student_style" / "week4_course_template",
+                "part6_course_template": HERE / "student_style" / "part6_course_template"}
 
 PLACEHOLDER = re.compile(r"@[A-Z_]+@")
 MOVE_MAIN = "def main():\n    rospy.init_node(NODE_NAME)\n"
@@ -90,30 +92,44 @@ PART5_MISTAKES = {
     "part5_careless": {"nodes/action_server.py": [
         ("        self.save(image_message, path)\n", "        path.write_text(image_message.format)\n")],
                        "nodes/search_server.py": [
-        ("                self.server.publish_feedback(SearchFeedback(travelled))\n", ""),
+        ("                                         on_sweep=lambda travelled: self.server.publish_feedback(\n"
+         "                                             SearchFeedback(travelled)),\n", ""),
         ("        self.server.publish_feedback(SearchFeedback(result.total_distance_travelled))\n", ""),
         ("            rospy.loginfo(text)\n", "            rospy.loginfo(text)\n"
                                              "            self.robot.drive(plan.velocity, 0.0)  # keep searching\n")]},
 }
 
 
+PART6_MISTAKES = {
+    # name: {file in week6_vision: [(text in the reference, what the student wrote instead)]}
+    "part6_reference": {},
+    # The colour search masks every colour with red's threshold (it stops facing the red pillar whatever it looks
+    # for); the line follower steers nowhere: it drives straight on from START.
+    "part6_careless": {"nodes/colour_search.py": [("colour_mask(image, colour)", "colour_mask(image, \"red\")")],
+                       "nodes/line_follower.py": [("twist(command.linear, command.angular)",
+                                                   "twist(command.linear, 0.0)")]},
+}
+# Each reference package and the sample submissions made from it.
+REFERENCES = ((REFERENCE, MISTAKES), (PART5_REFERENCE, PART5_MISTAKES), (PART6_REFERENCE, PART6_MISTAKES))
+
+
 SELF_CONTAINED = tuple(name for name, changes in MISTAKES.items()
                        if not any(PLACEHOLDER.search(new) for replacements in changes.values()
-                                  for _, new in replacements)) + tuple(FROM_SCRATCH)
-"""The samples that need no `fill` (every one but those whose hostile code needs the test's paths and addresses):
-what a benchmark can grade as a class."""
+                                  for _, new in replacements)) + ("student_style", "course_template")
+"""The Week 4 samples that need no `fill` (every one but those whose hostile code needs the test's paths and
+addresses): what a benchmark can grade as a class."""
 
 
 def make_submission(name: str, folder: Path, fill: Optional[Dict[str, str]] = None) -> Path:
-    """The submission `name` (a key of MISTAKES, PART5_MISTAKES or FROM_SCRATCH) as a student folder holding the
-    package (week4_services, or week5_actions for Part 5); returns the folder. `fill` replaces placeholders
-    (hostile_code.py's @NAME@) in the files the mistake changed."""
+    """The submission `name` (a key of MISTAKES, PART5_MISTAKES, PART6_MISTAKES or FROM_SCRATCH) as a student folder
+    holding the package (week4_services, week5_actions for Part 5, week6_vision for Part 6); returns the folder.
+    `fill` replaces placeholders (hostile_code.py's @NAME@) in the files the mistake changed."""
     student = Path(folder) / name
     if name in FROM_SCRATCH:
         shutil.copytree(FROM_SCRATCH[name], student / FROM_SCRATCH[name].name,
                         ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
         return student
-    reference, mistakes = (PART5_REFERENCE, PART5_MISTAKES) if name in PART5_MISTAKES else (REFERENCE, MISTAKES)
+    reference, mistakes = next((folder, table) for folder, table in REFERENCES if name in table)
     package = student / reference.name
     shutil.copytree(reference, package, ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
     for relative, replacements in mistakes[name].items():

@@ -124,7 +124,7 @@ MOTION = CHECK + ("expect", "motion")
     (_delete(("suite",)), "suite", "missing"),
     (_set(("suite",), "week 4"), "suite", "not a suite name"),
     (_delete(("world",)), "checks[0].expect.motion", "needs a robot: the suite has no world"),
-    (_delete(("services",)), "services", "a suite needs services or actions"),
+    (_delete(("services",)), "services", "a suite needs services, actions or runs"),
     (_set(("settle_s",), -1), "settle_s", "must be >= 0"),
     (_set(("timeout_s",), 0), "timeout_s", "must be > 0"),
     (_set(("still_timeout_s",), "ten"), "still_timeout_s", "expected a finite number"),

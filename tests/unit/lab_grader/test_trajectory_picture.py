@@ -16,8 +16,14 @@ def _magenta_pixels(png):
 
 
 def test_the_picture_shows_the_floor_markings(monkeypatch):
-    monkeypatch.setattr(trajectory_picture, "shipped_world_path", lambda name: FLOOR_WORLD)
+    monkeypatch.setattr(trajectory_picture, "world_path", lambda name: FLOOR_WORLD)
     assert _magenta_pixels(trajectory_picture.trajectory_png("every_marking", CHECKS)) > 500
+
+
+def test_a_world_in_another_package_is_drawn_by_its_package_path():
+    """The course's line-following track (tuos_simulations) and its pink line."""
+    png = trajectory_picture.trajectory_png("tuos_simulations/worlds/line_following.yaml", CHECKS)
+    assert _magenta_pixels(png) > 500
 
 
 def test_a_world_without_a_floor_layer_still_draws():

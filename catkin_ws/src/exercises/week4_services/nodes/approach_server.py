@@ -12,8 +12,9 @@ silent for 1 s (the simulator died): stops and replies with the failure.
 import rospy
 from tuos_msgs.srv import Approach, ApproachResponse
 
-from tb3_client.robot import Robot, RobotError, object_ahead_in, travelled_between
-from week4_services.approach import TIME_LIMIT_S, ApproachController, Outcome
+from tb3_client.robot import Robot, RobotError
+from week4_services.approach import TIME_LIMIT_S, Outcome
+from week4_services.approach_drive import ApproachDrive
 from week4_services.requests import InvalidRequest, approach
 
 NODE_NAME = "approach_service_server"
@@ -43,32 +44,10 @@ class ApproachServer:
         return ApproachResponse(message)
 
     def drive_until_close(self, plan):
-        """Run the controller on every /odom update, feeding it each new LiDAR sweep with the stamps of both;
-        returns the outcome.
-
-        Starts from a sweep taken after the request arrived, never an older one (the world may have been
-        reset or the robot moved since)."""
-        self.robot.wait_for_new_sweep()
-        controller = ApproachController(plan)
-        start = self.robot.odom
-        start_time = rospy.get_rostime()
-        sweeps_seen = None
+        """Approach under the shared drive loop (week4_services.approach_drive); returns the outcome."""
         rospy.loginfo("Approaching at %.2f m/s to stop %.2f m from the object ahead...",
                       plan.velocity, plan.distance)
-        while True:
-            odom, scan, scan_count = self.robot.latest()
-            controller.on_odometry(travelled_between(start, odom), odom.twist.twist.linear.x,
-                                   odom.header.stamp.to_sec())
-            if scan_count != sweeps_seen:
-                sweeps_seen = scan_count
-                ahead = object_ahead_in(scan)
-                controller.on_sweep(ahead.distance if ahead else None, scan.header.stamp.to_sec())
-            controller.on_clock((rospy.get_rostime() - start_time).to_sec())
-            step = controller.step()
-            self.robot.drive(step.velocity, 0.0)
-            if step.outcome is not Outcome.DRIVING:
-                return step.outcome
-            self.robot.wait_for_update(need_scan=True)
+        return ApproachDrive(self.robot, plan).run(lambda: rospy.get_rostime().to_sec())
 
     @staticmethod
     def describe(plan, outcome, final):

@@ -12,15 +12,15 @@ Refused at once, without motion, as aborted with the reason in the status text a
 at once and the goal ends preempted with the distance so far. Nothing in range ahead after 3.5 m, still driving
 after 60 s, or /odom or /scan silent for 1 s: the robot stops and the goal ends aborted with the reason. The robot
 is stopped (zero Twist) whenever a goal ends and when the node shuts down. week5_actions.search_goal holds these
-choices; the driving is the Week 4 approach controller (week4_services.approach).
+choices; the driving is the Week 4 approach service's (week4_services.approach_drive).
 All robot timing is rospy time (sim time under tb3_sim).
 """
 import actionlib
 import rospy
 from tuos_msgs.msg import SearchAction, SearchFeedback, SearchResult
 
-from tb3_client.robot import Robot, RobotError, object_ahead_in, travelled_between
-from week4_services.approach import ApproachController, Outcome
+from tb3_client.robot import Robot, RobotError
+from week4_services.approach_drive import ApproachDrive
 from week5_actions.search_goal import InvalidSearchGoal, outcome_text, plan_search, preempted_text, succeeded, summary
 
 NODE_NAME = "search_action_server"
@@ -30,7 +30,7 @@ ACTION_NAME = "/search_action_server"
 class SearchServer:
     def __init__(self):
         self.robot = Robot()
-        self.start = None   # the /odom message where the current goal started driving
+        self.drive = None   # the current goal's ApproachDrive (where it started driving)
         self.server = actionlib.SimpleActionServer(ACTION_NAME, SearchAction, self.on_goal, auto_start=False)
         self.server.start()
         rospy.on_shutdown(lambda: self.abort("the action server is shutting down"))
@@ -42,12 +42,15 @@ class SearchServer:
         except InvalidSearchGoal as error:
             self.abort("Goal refused: {}".format(error))
             return
-        self.start = None
+        self.drive = ApproachDrive(self.robot, plan)
         try:
             with self.robot.exclusive(need_scan=True):
                 rospy.loginfo("Searching at %.2f m/s, to stop %.2f m from the object ahead...", plan.velocity,
                               plan.distance)
-                outcome = self.drive_until_close(plan)
+                outcome = self.drive.run(lambda: rospy.get_rostime().to_sec(),
+                                         on_sweep=lambda travelled: self.server.publish_feedback(
+                                             SearchFeedback(travelled)),
+                                         cancelled=self.server.is_preempt_requested)
                 self.robot.stop()
                 if outcome is None:
                     result = summary(self.travelled(), None)
@@ -70,34 +73,7 @@ class SearchServer:
 
     def travelled(self):
         """Metres (straight line) from where this goal started, by /odom; 0 before it started."""
-        return 0.0 if self.start is None else travelled_between(self.start, self.robot.odom)
-
-    def drive_until_close(self, plan):
-        """Drive under the approach controller, one feedback per new LiDAR sweep; returns its outcome, or None
-        when the goal was cancelled (the robot is stopped at once)."""
-        self.robot.wait_for_new_sweep()
-        controller = ApproachController(plan)
-        self.start = self.robot.odom
-        start_time = rospy.get_rostime()
-        sweeps_seen = None
-        while True:
-            if self.server.is_preempt_requested():
-                self.robot.stop()
-                return None
-            odom, scan, scan_count = self.robot.latest()
-            travelled = travelled_between(self.start, odom)
-            controller.on_odometry(travelled, odom.twist.twist.linear.x, odom.header.stamp.to_sec())
-            if scan_count != sweeps_seen:
-                sweeps_seen = scan_count
-                ahead = object_ahead_in(scan)
-                controller.on_sweep(ahead.distance if ahead else None, scan.header.stamp.to_sec())
-                self.server.publish_feedback(SearchFeedback(travelled))
-            controller.on_clock((rospy.get_rostime() - start_time).to_sec())
-            step = controller.step()
-            self.robot.drive(step.velocity, 0.0)
-            if step.outcome is not Outcome.DRIVING:
-                return step.outcome
-            self.robot.wait_for_update(need_scan=True)
+        return 0.0 if self.drive is None else self.drive.travelled()
 
     def abort(self, text, result=None):
         """End the current goal as aborted with `text` (unless it has ended already: on shutdown the hook and the

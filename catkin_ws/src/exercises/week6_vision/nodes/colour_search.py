@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """COM2009 Assignment #1 Part 6 Exercise 3: turn on the spot and stop facing each coloured pillar in turn.
 
-Run it in `roslaunch tuos_simulations coloured_pillars.launch`. ~colours (default "blue", the course's first
-target; e.g. "turquoise,green,blue,red" for all four pillars) are looked for one after the other: the robot turns
+Run it in `roslaunch tuos_simulations coloured_pillars.launch`. ~colours (default "red,green,turquoise,blue": the
+exercise's task, every pillar, in the order the robot meets them turning from its start; "blue" is the course's
+own node's one target) are looked for one after the other: the robot turns
 anticlockwise at ~turn_speed (0.4 rad/s) until the colour is in view (an HSV threshold on each frame from
 /camera/rgb/image_raw, week6_vision.colour_masks), turns the blob's centroid to the middle of the image, stops,
 prints "SEARCH COMPLETE: The robot is now facing the <colour> pillar.", waits ~pause (2 s) and looks for the next.
@@ -12,13 +13,14 @@ the robot and exits. Publishes /cmd_vel; a zero Twist on shutdown (Ctrl-C).
 import rospy
 
 from week6_vision.colour_masks import centroid, colour_mask, colour_name
-from week6_vision.colour_search import ColourSearch
+from week6_vision.pillar_search import ColourSearch
 from week6_vision.ros_node import bgr_image, run, subscribe_camera, twist, velocity_publisher
 
 
 class ColourSearchNode:
     def __init__(self):
-        colours = [colour_name(c) for c in str(rospy.get_param("~colours", "blue")).split(",") if c.strip()]
+        wanted = str(rospy.get_param("~colours", "red,green,turquoise,blue"))
+        colours = [colour_name(c) for c in wanted.split(",") if c.strip()]
         self.search = ColourSearch(colours, turn_speed=rospy.get_param("~turn_speed", 0.4),
                                    pause_s=rospy.get_param("~pause", 2.0))
         self.cmd_vel = velocity_publisher()

@@ -12,6 +12,14 @@ because the student's node died, or one that overran, is replaced for the next e
 node that is missing or dies, a check runner that overruns: each is recorded with its evidence (the tail of the
 log) and the submission gets the checks' verdicts as far as they got; the batch goes on.
 
+A run (a node that serves nothing but drives the robot: Part 6) is graded so: the runner resets the robot, waits
+until it rests and creates the exercise's ready file; only then does the grader start the student's node (found by
+the course's file name, else by a script whose name shares a word with it), and the runner records the robot for
+the run's duration. A run's node that ends by itself with exit status 0 (its job done) has not crashed; the
+runner is told (the exercise's ended file) and ends the recording once the robot has rested for a while. An exercise
+in another world (or with other simulator arguments) than the one running gets a simulator of its own: the running
+one is stopped, with the check runner that was connected to it, and the next starts in its place.
+
 Logs are written by the grader outside the student's workspace, under the submission's output folder.
 """
 import json
@@ -26,12 +34,14 @@ from lab_grader.html_report import report_html
 from lab_grader.node_logs import build_errors, traceback_of
 from lab_grader.sandbox import STUDENT_UID_BASE, Limits, SubmissionSandbox
 from lab_grader.submissions import read_package_name
+from lab_grader.worlds import launch_argument
 
 BUILD_TIMEOUT_S = 300.0
 SIMULATOR_START_S = 60.0
 SIMULATOR_READY_SERVICE = "/gazebo/reset_world"
 MASTER_READY_SERVICE = "/rosout/get_loggers"    # roscore's rosout node is up: the master answers
 CHECKS_TIMEOUT_S = 600.0      # one exercise's checks
+READY_TIMEOUT_S = 60.0        # a run's robot must be reset and at rest within this (the runner says so)
 RUNNER_EXIT_S = 10.0          # the check runner ends this soon after the end of its input (it leaves the graph)
 TRY_SCRIPT_S = 60.0            # a script tried for an exercise must offer its service (or action) within this ...
 NODE_UP_GRACE_S = 5.0          # ... or within this once it has called init_node
@@ -90,10 +100,28 @@ def node_candidates(submission, course_name: str):
                                            str(item[1])))
 
 
+def run_candidate(submission, course_name: str):
+    """(package, path) for a run whose course file `course_name` is missing: the first script that starts a node and
+    shares a word with the course's name (colour_search_node.py for colour_search.py), or None. A run serves
+    nothing the grader could recognise it by, so the name is all there is."""
+    words = set(re.findall(r"[a-z0-9]+", course_name.lower())) - {"py", "server", "node"}
+    return next((candidate for candidate in node_candidates(submission, course_name)
+                 if words & set(re.findall(r"[a-z0-9]+", candidate[1].name.lower()))), None)
+
+
 def ros_environment(base_env: Dict[str, str]) -> Dict[str, str]:
     """The lab's ROS environment, bound to the box's own master on loopback."""
     env = dict(base_env, ROS_MASTER_URI="http://localhost:{}".format(ROS_PORT), ROS_HOSTNAME="localhost")
     env.pop("ROS_IP", None)
+    return env
+
+
+def headless(env: Dict[str, str]) -> Dict[str, str]:
+    """`env` for the student's processes: no X display (the box has none), and Qt's offscreen platform, so that
+    cv2.imshow and cv2.waitKey, which the course's vision templates call on every frame, work and show nothing
+    instead of aborting the node ("could not connect to display")."""
+    env = dict(env, QT_QPA_PLATFORM="offscreen")
+    env.pop("DISPLAY", None)
     return env
 
 
@@ -143,7 +171,7 @@ class SubmissionGrader:
         result["stage_s"] = {what: round(end - begin, 1) for (what, begin), (_, end)
                              in zip(stages, stages[1:] + [(None, finished)])}
         try:
-            (out_dir / REPORT_FILE).write_text(report_html(result, self.suite.world))
+            (out_dir / REPORT_FILE).write_text(report_html(result, self._worlds()))
         except Exception as error:   # noqa: BLE001 - a picture that cannot be drawn must not lose the grades
             result["problems"].append("the HTML report could not be written: {}".format(error))
         write_json(out_dir / RESULT_FILE, result)
@@ -152,14 +180,15 @@ class SubmissionGrader:
     def _grade_in(self, box, submission, out_dir, result, on_stage):
         on_stage("copying")
         box.copy_into_workspace(submission.source_dir, "src")
-        env = box.student_env(self.env)
+        env = headless(box.student_env(self.env))
         box.run_student(["find", "src", "-name", "*.py", "-exec", "chmod", "+x", "{}", "+"], env,
                         out_dir / "chmod.log", timeout_s=30)
         # roscore and the simulator start while the package builds (they do not need it): the two start-ups overlap
         # instead of adding up. A build that fails has cost a simulator start-up for nothing.
         on_stage("building (and starting {})".format(self._ros_what()))
         truth_socket = box.trusted_dir / GROUND_TRUTH_SOCKET
-        ready_service, startup_log = self._start_ros(box, out_dir, truth_socket)
+        self._simulator = None
+        ready_service, startup_log = self._start_ros(box, out_dir, truth_socket, self.suite.exercises()[0])
         build = box.run_student(["catkin_make"], env, out_dir / "build.log", timeout_s=BUILD_TIMEOUT_S)
         result["build"] = {"ok": build.ok, "stopped": build.stop_reason, "log_tail": None if build.ok
                            else log_tail(out_dir / "build.log"),
@@ -183,31 +212,62 @@ class SubmissionGrader:
         parts = {}
         exercises = self.suite.exercises()
         runner = None
+
+        def close_runner():
+            runner.close_input()
+            runner.wait(RUNNER_EXIT_S)
+
         try:
             for number, exercise in enumerate(exercises, start=1):
+                if self._simulator is not None and self._simulator[0] != self._simulator_key(exercise):
+                    on_stage("exercise {}/{} ({}): starting its world".format(number, len(exercises), exercise.node))
+                    if runner is not None:
+                        close_runner()       # connected to the simulator about to stop
+                        runner = None
+                    problem = self._switch_simulator(box, out_dir, truth_socket, exercise)
+                    if problem is not None:
+                        result["problems"].append(problem)
+                        parts[exercise.node] = not_run(self.suite, exercise, {"problem": problem})
+                        continue
                 if runner is None:
                     runner_log = out_dir / "checks-runner-{}.log".format(number)
                     runner = box.start_trusted(
                         ["python3", "-m", "lab_grader.checks.runner", "--suite", str(self.suite.path), "--serve",
                          "--ground-truth", str(truth_socket), "--student-home", str(box.workspace)], self.env,
                         runner_log, commands=True)
+                checks_log = out_dir / "checks-{}.log".format(number)
+                checks_file = out_dir / "checks-{}.json".format(number)
+                checks_file.unlink(missing_ok=True)   # an earlier grading's, in the same output folder
+                command = {"exercise": exercise.node, "out": str(checks_file), "log": str(checks_log)}
                 on_stage("exercise {}/{} ({}): finding its node".format(number, len(exercises), exercise.node))
-                node, server = self._start_server(box, submission, exercise, env, out_dir, number,
-                                                  served=[node["file"] for node in result["nodes"] if node["file"]])
+                if exercise.run is None:
+                    node, server = self._start_server(box, submission, exercise, env, out_dir, number,
+                                                      served=[node["file"] for node in result["nodes"]
+                                                              if node["file"]])
+                else:
+                    node, server = self._find_run_node(box, submission, exercise, env, out_dir)
                 result["nodes"].append(node)
                 if server is None:
                     parts[exercise.node] = not_run(self.suite, exercise, node)
                     continue
-                checks_log = out_dir / "checks-{}.log".format(number)
                 checks_log.write_text("")       # the runner appends this exercise's lines
                 on_stage("exercise {}/{} ({}): checks".format(number, len(exercises), exercise.node), checks_log)
-                checks_file = out_dir / "checks-{}.json".format(number)
-                checks_file.unlink(missing_ok=True)   # an earlier grading's, in the same output folder
-                ended = watch_checks(runner, server, json.dumps(
-                    {"exercise": exercise.node, "out": str(checks_file), "log": str(checks_log)}), checks_file)
-                crashed = not server.running()
-                node.update(running_at_end=not crashed, **(crash_report(server.log_path) if crashed else {}))
-                server.stop()
+                if exercise.run is None:
+                    ended = watch_checks(runner, server, json.dumps(command), checks_file)
+                else:
+                    ready = out_dir / "ready-{}".format(number)
+                    ready.unlink(missing_ok=True)
+                    node_ended = out_dir / "ended-{}".format(number)
+                    node_ended.unlink(missing_ok=True)
+                    ended, server = self._watch_run(
+                        runner, json.dumps(dict(command, ready=str(ready), ended=str(node_ended))), ready, node_ended,
+                        checks_file, lambda start_node=server: start_node(number))
+                crashed = server is not None and not server.running() and (exercise.run is None
+                                                                             or not server.wait(0).ok)
+                node.update(running_at_end=server is not None and server.running(),
+                            **(crash_report(server.log_path) if crashed else {}))
+                if server is not None:
+                    server.stop()
                 checks = read_json(checks_file)
                 if ended is not None:
                     runner = None     # it ended or was stopped: the next exercise starts another
@@ -221,24 +281,93 @@ class SubmissionGrader:
                 parts[exercise.node] = checks_as_crashed(checks, node) if crashed else checks
         finally:
             if runner is not None:
-                runner.close_input()
-                runner.wait(RUNNER_EXIT_S)
+                close_runner()
         return parts
 
-    def _ros_what(self):
-        return "roscore" if self.suite.world is None else "the simulator"
+    def _find_run_node(self, box, submission, exercise, env, out_dir):
+        """(the node's record, a function that starts it: number -> SandboxProcess) for a run, or (record, None):
+        the course's file name, else a script named like it (run_candidate)."""
+        node = {"exercise": exercise.node, "serves": [], "file": None, "package": None, "found_by": None,
+                "tried": [], "running_at_end": False, "problem": None, "crashed": False, "traceback": None,
+                "log_tail": None}
+        found, how = find_node(submission, exercise.node), "the course's file name"
+        if found is None:
+            found, how = run_candidate(submission, exercise.node), "a script named like the course's file"
+        if found is None:
+            node["problem"] = "no file named {} and no script whose name shares a word with it".format(exercise.node)
+            return node, None
+        package, path = found
+        node.update(file=str(path.relative_to(submission.source_dir)), package=package, found_by=how)
+        node["tried"].append(node["file"])
 
-    def _start_ros(self, box, out_dir, truth_socket):
-        """Start roscore and, when the suite has a world, tb3_sim serving its ground truth on `truth_socket`.
+        def start(number):
+            return box.start_student(overlay("exec rosrun {} {}".format(package, path.name)), env,
+                                     out_dir / "node-{}-{}.log".format(number, path.name))
+        return node, start
+
+    @staticmethod
+    def _watch_run(runner, command, ready, node_ended, checks_file, start):
+        """Give the runner a run's `command`, start the node (`start()`) once the runner has created `ready` (the
+        robot reset and at rest), and wait for `checks_file` as watch_checks does; the node may end by itself
+        meanwhile (its job done: the file `node_ended` then tells the runner, which ends the recording once the
+        robot rests). Returns (watch_checks's answer, the node's SandboxProcess or None)."""
+        if not runner.send_line(command):
+            return runner.wait(RUNNER_EXIT_S), None
+        deadline = time.monotonic() + READY_TIMEOUT_S
+        while not ready.exists():
+            if checks_file.exists():
+                return None, None     # the runner could not prepare the robot: its results say why
+            if not runner.running() or time.monotonic() > deadline:
+                return runner.wait(0), None
+            time.sleep(POLL_S)
+        server = start()
+        return wait_for_checks(runner, server, checks_file, ended=node_ended), server
+    def _worlds(self):
+        """[(world, the ids of the checks graded in it)] in the suite's order, for the report's pictures."""
+        worlds = {}
+        for exercise in self.suite.exercises():
+            world = self.suite.world_of(exercise)
+            if world is not None:
+                worlds.setdefault(world, []).extend(exercise.check_ids)
+        return list(worlds.items())
+
+    def _ros_what(self):
+        return "roscore" if self.suite.world_of(self.suite.exercises()[0]) is None else "the simulator"
+
+    def _start_ros(self, box, out_dir, truth_socket, exercise):
+        """Start roscore and, when `exercise` has a world, tb3_sim serving its ground truth on `truth_socket`.
         Returns (the service that says they are up, the log that says why not)."""
         box.start_trusted(["roscore", "-p", str(ROS_PORT)], self.env, out_dir / "roscore.log")
-        if self.suite.world is None:
+        if self.suite.world_of(exercise) is None:
             return MASTER_READY_SERVICE, out_dir / "roscore.log"
-        box.start_trusted(["roslaunch", "--wait", "tb3_sim", "tb3_sim.launch", "gui:=false",
-                           "world:=" + self.suite.world, "real_time_factor:={:g}".format(self.real_time_factor),
-                           "ground_truth_socket:={}".format(truth_socket)] + self.suite.launch_args(),
-                          self.env, out_dir / "simulator.log")
-        return SIMULATOR_READY_SERVICE, out_dir / "simulator.log"
+        return SIMULATOR_READY_SERVICE, self._start_simulator(box, out_dir, truth_socket, exercise)
+
+    def _simulator_key(self, exercise):
+        return self.suite.world_of(exercise), tuple(self.suite.launch_args(exercise))
+
+    def _start_simulator(self, box, out_dir, truth_socket, exercise):
+        """Start tb3_sim in `exercise`'s world with its arguments; returns its log."""
+        world, args = self._simulator_key(exercise)
+        log = out_dir / ("simulator.log" if self._simulator is None else "simulator-{}.log".format(exercise.node))
+        process = box.start_trusted(["roslaunch", "--wait", "tb3_sim", "tb3_sim.launch", "gui:=false",
+                                     "world:=" + launch_argument(world),
+                                     "real_time_factor:={:g}".format(self.real_time_factor),
+                                     "ground_truth_socket:={}".format(truth_socket)] + list(args),
+                                    self.env, log)
+        self._simulator = (self._simulator_key(exercise), process)
+        return log
+
+    def _switch_simulator(self, box, out_dir, truth_socket, exercise):
+        """Make sure the simulator runs `exercise`'s world and arguments: stop another and start this one. Returns
+        None when it runs, else why not."""
+        if self._simulator is None or self._simulator[0] == self._simulator_key(exercise):
+            return None
+        self._simulator[1].stop()
+        log = self._start_simulator(box, out_dir, truth_socket, exercise)
+        ready = box.run_trusted(["python3", "-m", "lab_grader.wait_service", SIMULATOR_READY_SERVICE,
+                                 str(SIMULATOR_START_S)], self.env, out_dir / "startup_wait.log",
+                                timeout_s=SIMULATOR_START_S + 10)
+        return None if ready.ok else "the simulator did not start: {}".format(log_tail(log, 500))
 
     def _start_server(self, box, submission, exercise, env, out_dir, number, served=()):
         """Start the node that serves `exercise`, alone: the course's file when the submission has one (the check
@@ -290,17 +419,27 @@ class SubmissionGrader:
 
 def watch_checks(runner, server, command, checks_file):
     """Give the serving check runner `runner` (a SandboxProcess) its next exercise, `command`, and wait until it has
-    written `checks_file`, at most CHECKS_TIMEOUT_S. If the student's node `server` exits meanwhile, stop the runner
-    at once (SIGINT: it writes the results it has, the rest "not run"); past the deadline, kill it. Returns None
-    while the runner serves on, else its RunResult (it ended, or was stopped)."""
-    deadline = time.monotonic() + CHECKS_TIMEOUT_S
+    written `checks_file` (wait_for_checks). Returns None while the runner serves on, else its RunResult (it ended,
+    or was stopped)."""
     if not runner.send_line(command):
         return runner.wait(RUNNER_EXIT_S)
+    return wait_for_checks(runner, server, checks_file)
+
+
+def wait_for_checks(runner, server, checks_file, ended=None):
+    """Wait until the runner has written `checks_file`, at most CHECKS_TIMEOUT_S. If the student's node `server`
+    exits meanwhile, stop the runner at once (SIGINT: it writes the results it has, the rest "not run"), unless
+    `ended` is given and the node exited with status 0 (a run's node whose job is done): then create the file
+    `ended`, which tells the runner. Past the deadline, kill the runner. Returns None while the runner serves on,
+    else its RunResult (it ended, or was stopped)."""
+    deadline = time.monotonic() + CHECKS_TIMEOUT_S
     while not checks_file.exists():
         if not runner.running():
             return runner.wait(0)
         if not server.running():
-            return runner.stop()
+            if ended is None or not server.wait(0).ok:
+                return runner.stop()
+            ended.touch()
         if time.monotonic() > deadline:
             return runner.wait(0)
         time.sleep(POLL_S)

@@ -59,8 +59,9 @@ def nodes_table(nodes) -> str:
             "<th>at the end</th><th>problem</th></tr>{}</table>".format("".join(rows)))
 
 
-def report_html(result, world_name) -> str:
-    """The report of one submission's `result` (grade.py's result.json content)."""
+def report_html(result, worlds) -> str:
+    """The report of one submission's `result` (grade.py's result.json content); `worlds` is [(world, the ids of the
+    checks graded in it)]: a picture of their trajectories over each world."""
     esc = html.escape
     rows = "".join(
         "<tr><td>{id}</td><td>{title}</td><td>{kind}</td><td>{weight:g}</td><td class='{verdict}'>{verdict}</td>"
@@ -76,11 +77,14 @@ def report_html(result, world_name) -> str:
         errors = "\n".join(build.get("errors") or []) or "(no error line recognised: see the log's end)"
         build_log = ("<h2>Build errors (catkin_make)</h2><pre id='build-errors'>{}</pre><details><summary>the build "
                      "log's end</summary><pre>{}</pre></details>".format(esc(errors), esc(build.get("log_tail") or "")))
-    picture = ""
-    if any((check.get("evidence") or {}).get("trajectory") for check in result["checks"]):
-        png = base64.b64encode(trajectory_png(world_name, result["checks"])).decode()
-        picture = "<h2>Trajectories</h2><img id='trajectory' alt='trajectories' src='data:image/png;base64,{}'>".format(
-            png)
+    pictures = []
+    for world, check_ids in worlds:
+        checks = [check for check in result["checks"] if check["id"] in check_ids]
+        if any((check.get("evidence") or {}).get("trajectory") for check in checks):
+            png = base64.b64encode(trajectory_png(world, checks)).decode()
+            pictures.append("<img id='trajectory{}' alt='trajectories in {}' src='data:image/png;base64,{}'>".format(
+                "-{}".format(len(pictures) + 1) if pictures else "", esc(world), png))
+    picture = "<h2>Trajectories</h2>" + "".join(pictures) if pictures else ""
     return """<!doctype html><html lang="en"><head><meta charset="utf-8"><title>{student}: {suite}</title>
 <style>{style}</style></head><body>
 <h1>{student}: {score:g} / {max_score:g} points ({suite})</h1>

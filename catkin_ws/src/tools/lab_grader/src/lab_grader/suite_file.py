@@ -77,6 +77,45 @@ The format (suites/week4.yaml is the worked example, with a comment on every key
           front_distance_m: {value: 0.4, tolerance: 0.05}  # with a world: as a service check's, once still
           images: {path_field: image_path, count: 4}   # the result field naming a folder ("~/..." = the student's
                                        #   HOME) that must hold `count` image files, every one decodable
+
+A node that serves nothing but drives the robot (Part 6's colour search and line follower) is a `run`: the grader
+resets the robot, starts the student's node alone and records the robot's true motion until `duration_s` of sim
+time after it first moved (its start-up, however slow the machine, is not counted); every check of that run is
+judged on the one recording (lab_grader.checks.run_checks documents the quantities):
+
+    runs:
+      - node: colour_search.py        # the course's file name (rosrun <package> colour_search.py)
+        duration_s: 75                # sim s recorded from the robot's first motion on
+        start_s: 60                   # optional (60): sim s from the reset for the robot's first motion (else the
+                                      #   recording ends there: a node that never moves the robot)
+      - node: line_follower.py
+        duration_s: 45
+        world: tuos_simulations/worlds/line_following.yaml   # optional (the suite's world, which a suite with runs
+                                      #   must have): this run's world, a tb3_sim world name or <package>/<path of
+                                      #   a world file in it>; the grader starts a simulator of its own for it
+        simulator_args: {x_pos: 2.4, y_pos: -2.5, yaw: 3.14}   # optional (the suite's): this run's tb3_sim args
+    checks:
+      - id: faces_blue
+        title: ...
+        weight: 40
+        run: colour_search.py         # one of runs[].node
+        expect:                       # one or more of the kinds in RUN_EXPECT_PARSERS
+          stops_facing:               # it stops (still >= still_s after it first moved) facing each of `faces`
+            faces: [blue]
+            landmarks: {blue: [0.6, -0.6], red: [0.6, 0.6]}   # named points (x, y in m) it may face
+            tolerance_deg: 10         # |bearing from the true heading to the point|
+            still_s: 1.0
+      - id: follows_the_line
+        title: ...
+        weight: 30
+        run: line_follower.py
+        expect:
+          line:                       # a line on the floor: a chain of cubic Beziers (start, then 3 points each)
+            points: [[2.38, -2.5], ...]
+            progress_m: {min: 4}      # arc length reached before it first left the line (> leave_m from it)
+            leave_m: 0.15
+            mean_distance_m: {max: 0.05}   # the true position's distance to the line, over the samples after it
+            max_distance_m: {max: 0.15}    #   first moved
 """
 import math
 import re
@@ -96,6 +135,7 @@ DEFAULT_TIMEOUT_S = 30.0
 DEFAULT_STILL_TIMEOUT_S = 10.0
 DEFAULT_BY_TYPE_GRACE_S = 3.0
 DEFAULT_WAIT_S = 30.0
+DEFAULT_START_S = 60.0
 SUITE_NAME = re.compile(r"^[A-Za-z0-9_-]+$")
 CHECK_ID = re.compile(r"^[a-z][a-z0-9_]*$")
 FIELD_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
@@ -103,7 +143,11 @@ SERVICE_NAME = re.compile(r"^(/[A-Za-z][A-Za-z0-9_]*)+$")
 FILE_NAME = re.compile(r"^[A-Za-z0-9_.+-]+$")
 TYPE_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*/[A-Za-z][A-Za-z0-9_]*$")
 SUITE_KEYS = ("suite", "title", "world", "simulator_args", "real_time_factor", "settle_s", "timeout_s",
-              "still_timeout_s", "by_type_grace_s", "services", "actions", "checks")
+              "still_timeout_s", "by_type_grace_s", "services", "actions", "runs", "checks")
+RUN_KEYS = ("node", "duration_s", "start_s", "world", "simulator_args")
+RUN_CHECK_KEYS = ("id", "title", "kind", "weight", "run", "expect")
+STOPS_FACING_KEYS = ("faces", "landmarks", "tolerance_deg", "still_s")
+LINE_KEYS = ("points", "progress_m", "leave_m", "mean_distance_m", "max_distance_m")
 SERVICE_KEYS = ("name", "type", "node", "wait_s")
 SERVICE_CHECK_KEYS = ("id", "title", "kind", "weight", "service", "request", "timeout_s", "expect")
 ACTION_CHECK_KEYS = ("id", "title", "kind", "weight", "action", "goal", "cancel_after_s", "timeout_s", "expect")
@@ -185,6 +229,44 @@ class ActionExpectation(NamedTuple):
     images: Optional[ImagesExpectation] = None
 
 
+class StopsFacing(NamedTuple):
+    """Stops facing each of `faces` (names of `landmarks`, points x, y in m) within `tolerance_deg`; a stop is
+    `still_s` sim s or more of rest after the robot first moved."""
+
+    faces: Tuple[str, ...]
+    landmarks: Dict[str, Tuple[float, float]]
+    tolerance_deg: float
+    still_s: float
+
+
+class LineExpectation(NamedTuple):
+    """A line on the floor (cubic Beziers: the start point, then control 1, control 2, end for each) and what the
+    robot's true path must do along it."""
+
+    points: Tuple[Tuple[float, float], ...]
+    leave_m: float
+    progress_m: Optional[Range] = None
+    mean_distance_m: Optional[Range] = None
+    max_distance_m: Optional[Range] = None
+
+
+class RunExpectation(NamedTuple):
+    stops_facing: Optional[StopsFacing] = None
+    line: Optional[LineExpectation] = None
+
+
+class RunSpec(NamedTuple):
+    """A node the course has the student write and run that serves nothing: graded by what the robot does in
+    `duration_s` sim s from its first motion (which must come within `start_s` sim s of the reset), in `world` with
+    `simulator_args` (None: the suite's)."""
+
+    node: str
+    duration_s: float
+    world: Optional[str] = None
+    simulator_args: Optional[Tuple[Tuple[str, Any], ...]] = None
+    start_s: float = DEFAULT_START_S
+
+
 class ServiceSpec(NamedTuple):
     """A service (or action) the course asks for: its name, type, the course's file that serves it, and how long
     (wall s) to wait for it on the master."""
@@ -202,11 +284,13 @@ class Exercise(NamedTuple):
     services: Tuple[ServiceSpec, ...]
     actions: Tuple[ServiceSpec, ...]
     check_ids: Tuple[str, ...]
+    run: Optional[RunSpec] = None       # a run (the node serves nothing): its recording's length and world
 
 
 class CheckSpec(NamedTuple):
-    """A service check (`service`, `request`, an Expectation) or an action check (`action`, `goal`,
-    `cancel_after_s`, an ActionExpectation): the other kind's fields are None."""
+    """A service check (`service`, `request`, an Expectation), an action check (`action`, `goal`,
+    `cancel_after_s`, an ActionExpectation) or a run check (`run`, a RunExpectation): the other kinds' fields are
+    None."""
 
     id: str
     title: str
@@ -219,6 +303,7 @@ class CheckSpec(NamedTuple):
     goal: Optional[Dict[str, Any]] = None
     cancel_after_s: Optional[float] = None
     kind: str = REQUIRED
+    run: Optional[str] = None
 
 
 class Suite(NamedTuple):
@@ -234,23 +319,34 @@ class Suite(NamedTuple):
     checks: Tuple[CheckSpec, ...]
     actions: Tuple[ServiceSpec, ...] = ()
     simulator_args: Tuple[Tuple[str, Any], ...] = ()   # (tb3_sim.launch arg, value), in the file's order
+    runs: Tuple[RunSpec, ...] = ()
 
-    def launch_args(self):
-        """The simulator's roslaunch args beyond world and gui: ["camera_width:=640", ...]."""
-        return ["{}:={}".format(name, value) for name, value in self.simulator_args]
+    def launch_args(self, exercise=None):
+        """The simulator's roslaunch args beyond world and gui (["camera_width:=640", ...]): the suite's, or those
+        of `exercise`'s run when it has its own."""
+        run = exercise.run if exercise is not None else None
+        args = run.simulator_args if run is not None and run.simulator_args is not None else self.simulator_args
+        return ["{}:={}".format(name, value) for name, value in args]
+
+    def world_of(self, exercise=None):
+        """The world `exercise` is graded in: its run's own, else the suite's."""
+        run = exercise.run if exercise is not None else None
+        return run.world if run is not None and run.world is not None else self.world
 
     @property
     def nodes(self):
-        """The course's file names, each once, in the order the suite lists their services and actions."""
-        return tuple(dict.fromkeys(spec.node for spec in self.services + self.actions))
+        """The course's file names, each once, in the order the suite lists their services, actions and runs."""
+        return tuple(dict.fromkeys(spec.node for spec in self.services + self.actions + self.runs))
 
     def exercises(self) -> Tuple[Exercise, ...]:
         """One Exercise per course file, in the suite's order."""
         return tuple(Exercise(node, tuple(spec for spec in self.services if spec.node == node),
                               tuple(spec for spec in self.actions if spec.node == node),
                               tuple(check.id for check in self.checks
-                                    if any(spec.node == node and spec.name in (check.service, check.action)
-                                           for spec in self.services + self.actions)))
+                                    if check.run == node
+                                    or any(spec.node == node and spec.name in (check.service, check.action)
+                                           for spec in self.services + self.actions)),
+                              next((run for run in self.runs if run.node == node), None))
                      for node in self.nodes)
 
     @property
@@ -425,14 +521,21 @@ def parse_suite(data, path) -> Suite:
                        default=())
     actions = top.get("actions", lambda v, w: _services(convert, v, w, "an action type (package/Name)"),
                       default=())
-    if not services and not actions:
-        top.fail("services", "missing (a suite needs services or actions)")
-    targets = _Targets([service.name for service in services], [action.name for action in actions], world)
+    runs = top.get("runs", lambda v, w: _runs(convert, v, w, world), default=())
+    if not services and not actions and not runs:
+        top.fail("services", "missing (a suite needs services, actions or runs)")
+    taken = [spec.node for spec in services + actions]
+    for index, run in enumerate(runs):
+        if run.node in taken:
+            top.fail("runs[{}].node".format(index), "{} also serves a service or action: a run's node serves "
+                                                     "nothing".format(run.node))
+    targets = _Targets([service.name for service in services], [action.name for action in actions], world,
+                       [run.node for run in runs])
     checks = top.get("checks", lambda v, w: _checks(convert, v, w, targets, default_timeout_s), required=True)
     return Suite(name=name, title=title, path=path, world=world, real_time_factor=real_time_factor,
                  settle_s=float(settle_s),
                  still_timeout_s=still_timeout_s, by_type_grace_s=float(by_type_grace_s), services=services,
-                 checks=checks, actions=actions, simulator_args=tuple(simulator_args.items()))
+                 checks=checks, actions=actions, simulator_args=tuple(simulator_args.items()), runs=runs)
 
 
 class _Targets(NamedTuple):
@@ -441,6 +544,7 @@ class _Targets(NamedTuple):
     services: List[str]
     actions: List[str]
     world: Optional[str]
+    runs: List[str] = []
 
 
 def _items(convert, value, where):
@@ -465,6 +569,26 @@ def _services(convert, value, where, what) -> Tuple[ServiceSpec, ...]:
     return tuple(result)
 
 
+def _runs(convert, value, where, world) -> Tuple[RunSpec, ...]:
+    result: List[RunSpec] = []
+    for item_where, item in _items(convert, value, where):
+        entry = _Mapping(convert.file_label, item_where, item, RUN_KEYS)
+        node = entry.get("node", lambda v, w: convert.text(v, w, FILE_NAME, "a file name (no folders)"),
+                         required=True)
+        if any(run.node == node for run in result):
+            convert.fail(entry.where("node"), "{} is listed twice".format(node))
+        duration_s = entry.get("duration_s", convert.positive, required=True)
+        start_s = entry.get("start_s", convert.positive, default=DEFAULT_START_S)
+        run_world = entry.get("world", convert.text)
+        if world is None:
+            convert.fail(item_where, "a run needs a robot: the suite has no world (a run may name another world "
+                                     "than the suite's, which the grader then starts for it)")
+        args = entry.get("simulator_args", lambda v, w: convert.fields(v, w, convert.scalar))
+        result.append(RunSpec(node, float(duration_s), run_world, None if args is None else tuple(args.items()),
+                              float(start_s)))
+    return tuple(result)
+
+
 def _reference(convert, value, where, names, what):
     if value not in names:
         convert.fail(where, "{} is not one of the suite's {} ({})".format(_show(value), what, ", ".join(names)
@@ -476,7 +600,9 @@ def _checks(convert, value, where, targets, default_timeout_s) -> Tuple[CheckSpe
     result: List[CheckSpec] = []
     for item_where, item in _items(convert, value, where):
         is_action = isinstance(item, dict) and "action" in item
-        entry = _Mapping(convert.file_label, item_where, item, ACTION_CHECK_KEYS if is_action else SERVICE_CHECK_KEYS)
+        is_run = isinstance(item, dict) and "run" in item
+        entry = _Mapping(convert.file_label, item_where, item, RUN_CHECK_KEYS if is_run
+                         else ACTION_CHECK_KEYS if is_action else SERVICE_CHECK_KEYS)
         check_id = entry.get("id", lambda v, w: convert.text(v, w, CHECK_ID, "a check id (a-z, 0-9, _)"),
                              required=True)
         if any(check.id == check_id for check in result):
@@ -484,6 +610,11 @@ def _checks(convert, value, where, targets, default_timeout_s) -> Tuple[CheckSpe
         title = entry.get("title", convert.text, required=True)
         kind = entry.get("kind", lambda v, w: convert.choice(v, w, CHECK_KINDS), default=REQUIRED)
         weight = entry.get("weight", convert.non_negative, required=kind == REQUIRED, default=0)
+        if is_run:
+            run = entry.get("run", lambda v, w: _reference(convert, v, w, targets.runs, "runs"))
+            expect = entry.get("expect", lambda v, w: _run_expectation(convert, v, w), required=True)
+            result.append(CheckSpec(check_id, title, weight, None, None, 0.0, expect, kind=kind, run=run))
+            continue
         timeout_s = float(entry.get("timeout_s", convert.positive, default=default_timeout_s))
         if is_action:
             action = entry.get("action", lambda v, w: _reference(convert, v, w, targets.actions, "actions"))
@@ -544,6 +675,49 @@ def _action_expectation(convert, value=None, where="expect", world=None) -> Acti
         motion=mapping.get("motion", lambda v, w: _motion(convert, v, w)),
         front_distance_m=mapping.get("front_distance_m", convert.range),
         images=mapping.get("images", lambda v, w: _images(convert, v, w)))
+
+
+def _point(convert, value, where) -> Tuple[float, float]:
+    if not isinstance(value, list) or len(value) != 2:
+        convert.fail(where, "expected a point [x, y] in m, got {}".format(_show(value)))
+    return tuple(float(convert.number(item, "{}[{}]".format(where, index))) for index, item in enumerate(value))
+
+
+def _stops_facing(convert, value, where) -> StopsFacing:
+    mapping = _Mapping(convert.file_label, where, value, STOPS_FACING_KEYS)
+    landmarks = mapping.get("landmarks", lambda v, w: convert.fields(v, w, lambda i, iw: _point(convert, i, iw)),
+                            required=True)
+    faces = mapping.get("faces", lambda v, w: _field_names(convert, v, w), required=True)
+    for index, name in enumerate(faces):
+        if name not in landmarks:
+            mapping.fail("{}[{}]".format(mapping.where("faces"), index),
+                         "{} is not one of the landmarks ({})".format(_show(name), ", ".join(landmarks)))
+    return StopsFacing(faces, landmarks, float(mapping.get("tolerance_deg", convert.positive, required=True)),
+                       float(mapping.get("still_s", convert.positive, required=True)))
+
+
+def _line(convert, value, where) -> LineExpectation:
+    mapping = _Mapping(convert.file_label, where, value, LINE_KEYS)
+    points = mapping.get("points", lambda v, w: _items(convert, v, w), required=True)
+    if len(points) < 4 or (len(points) - 1) % 3:
+        mapping.fail(mapping.where("points"), "expected a start point and 3 more per cubic Bezier, got {} "
+                                              "points".format(len(points)))
+    return LineExpectation(tuple(_point(convert, item, item_where) for item_where, item in points),
+                           float(mapping.get("leave_m", convert.positive, required=True)),
+                           progress_m=mapping.get("progress_m", convert.range),
+                           mean_distance_m=mapping.get("mean_distance_m", convert.range),
+                           max_distance_m=mapping.get("max_distance_m", convert.range))
+
+
+RUN_EXPECT_PARSERS = {"stops_facing": _stops_facing, "line": _line}   # RunExpectation's fields, each a kind
+
+
+def _run_expectation(convert, value, where) -> RunExpectation:
+    mapping = _Mapping(convert.file_label, where, value, tuple(RUN_EXPECT_PARSERS))
+    if not mapping.data:
+        mapping.fail(where, "expected one of {}".format(", ".join(RUN_EXPECT_PARSERS)))
+    return RunExpectation(**{key: mapping.get(key, lambda v, w, parse=parse: parse(convert, v, w))
+                             for key, parse in RUN_EXPECT_PARSERS.items()})
 
 
 def _images(convert, value, where) -> ImagesExpectation:

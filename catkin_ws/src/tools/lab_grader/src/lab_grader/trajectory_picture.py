@@ -13,10 +13,11 @@ from matplotlib.patches import Circle, PathPatch  # noqa: E402
 from matplotlib.path import Path  # noqa: E402
 from matplotlib.transforms import Affine2D  # noqa: E402
 
+from lab_grader.worlds import world_path  # noqa: E402
 from tb3_sim.core.primitives import Disc, FilledPolygon, Image, Polyline, Text  # noqa: E402
 from tb3_sim.core.scene_primitives import model_primitives, scene_primitives  # noqa: E402
 from tb3_sim.core.text_outline import text_rings  # noqa: E402
-from tb3_sim.core.world_file import load_world, shipped_world_path  # noqa: E402
+from tb3_sim.core.world_file import load_world  # noqa: E402
 
 FIGURE_INCHES = (6.4, 4.8)
 DPI = 100
@@ -78,9 +79,10 @@ def _set_widths(axes, figure):
 
 
 def trajectory_png(world_name, checks) -> bytes:
-    """PNG of every check's trajectory ([[t, x, y, yaw], ...] in its evidence) over world `world_name`, one colour
-    per check, the line style by verdict (solid pass, dashed fail, dotted error)."""
-    world = load_world(shipped_world_path(world_name))
+    """PNG of every check's trajectory ([[t, x, y, yaw], ...] in its evidence) over world `world_name` (a shipped
+    world or <package>/<file>: lab_grader.worlds), one colour per check, the line style by verdict (solid pass,
+    dashed fail, dotted error)."""
+    world = load_world(world_path(world_name))
     figure, axes = pyplot.subplots(figsize=FIGURE_INCHES, dpi=DPI)
     try:
         _draw_world(axes, world)

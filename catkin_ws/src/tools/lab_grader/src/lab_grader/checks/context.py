@@ -34,6 +34,12 @@ the student's nodes. It
   records the true motion from before the goal until `settle_s` after its end, the front distance once still if
   asked, and the interference meanwhile, as `observe` does for a call.
 
+- records one run (`observe_run`): once the robot is prepared, it tells the grader to start the student's node
+  (it creates the file `ready_path`, when set) and records the true motion and the interference from then until
+  the run's duration after the robot first moved (in sim time), or its start_s without motion; once the grader
+  says the node has ended by itself (the file `ended_path` exists) and the robot has rested for RESTED_AFTER_END_S,
+  the recording ends there (nothing more can happen: the course's colour search exits after its last pillar).
+
 A suite without a world has no robot (`robot=False`): no /odom, /scan or /cmd_vel, nothing to reset, ROS time is
 wall time, and observations carry no samples.
 
@@ -61,6 +67,7 @@ from lab_grader.checks import image_folder, interference
 from lab_grader.checks.action_checks import ActionObservation
 from lab_grader.checks.ground_truth import TruthClient
 from lab_grader.checks.motion import Observation, is_still
+from lab_grader.checks.run_checks import RunObservation
 from lab_grader.checks.verdicts import CheckError, FoundService, InterferenceError, Interrupted
 from lab_grader.suite_file import GOAL_STATES
 
@@ -78,6 +85,7 @@ SERVER_ERROR_BYTES = re.compile(r"(responded with an error: )b(['\"])(.*)\2$", r
 POLL_WALL_S = 0.2              # service discovery polls the master this often
 STATE_NAMES = {getattr(GoalStatus, name): name for name in GOAL_STATES}   # 3 -> "SUCCEEDED"
 WAIT_SLICE_WALL_S = 0.01
+RESTED_AFTER_END_S = 2.0       # a run ends early once its node has ended and the robot has rested this long (sim s)
 
 
 def message_dict(message):
@@ -244,6 +252,8 @@ class GradingContext:
         self._action_clients = {}         # action name -> (SimpleActionClient, _FeedbackRecorder), made once
         self._sim_seen = (None, time.monotonic())   # (last sim time seen, wall time it changed)
         self._window = None               # the ground-truth Mark of the current check's start (prepare)
+        self.ready_path = None            # a run's node is started by the grader once this file exists
+        self.ended_path = None            # the grader creates this file when a run's node has ended by itself
         if not robot:
             return
         self._truth = TruthClient(ground_truth)
@@ -595,6 +605,43 @@ class GradingContext:
         return ActionObservation(dict(goal_fields), STATE_NAMES.get(outcome["state"], str(outcome["state"])),
                                  client.get_goal_status_text() or "", outcome["result"], feedback(), sent_s,
                                  cancelled_s, outcome["ended_s"], **robot_record(outcome["ended_s"]))
+
+    # ---- one run ----------------------------------------------------------------------------------------------------
+
+    def observe_run(self, duration_s, start_s):
+        """Tell the grader to start the run's node (create `ready_path`), then record the robot until `duration_s`
+        of sim time after it first moved, or `start_s` after now if it never moves (a RunObservation). The robot
+        must have been prepared."""
+        if not self.robot:
+            raise CheckError("a run needs a robot: the suite has no world")
+        origin, recording = self._truth.latest, self._truth.mark()
+        started_s = self.now()
+        if self.ready_path is not None:
+            with open(self.ready_path, "w") as ready:
+                ready.write("{:.3f}\n".format(started_s))
+        first_motion = []
+
+        def moved():
+            latest = self._truth.latest
+            if not first_motion and latest is not None and not is_still(latest):
+                first_motion.append(latest.t)
+            return bool(first_motion)
+
+        def over():
+            if not (self.ended_path and os.path.exists(self.ended_path)):
+                return False
+            latest = self._truth.latest
+            if latest is None or not is_still(latest):
+                rested_since[:] = []
+                return False
+            rested_since[:] = rested_since or [latest.t]
+            return latest.t - rested_since[0] >= RESTED_AFTER_END_S
+
+        rested_since = []
+        if self._wait_sim(started_s + start_s, moved):
+            self._wait_sim(first_motion[0] + duration_s, over)
+        samples = ((origin,) if origin is not None else ()) + self._truth.since(recording).samples
+        return RunObservation(started_s, samples, tuple(self._findings()))
 
     def inspect_images(self, named):
         """The images in the folder the result text `named` names, under the student's HOME (an ImageFolder)."""

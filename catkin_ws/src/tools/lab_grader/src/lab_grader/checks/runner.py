@@ -16,7 +16,9 @@ as it ends (the grader shows the latest in its progress line).
 
 `--serve` (instead of --out) is the grader's way, which runs each exercise's node alone: one runner (one rospy node,
 one ground-truth connection, made while the first exercise's node starts) grades exercise after exercise, each on
-a line of its stdin, `{"exercise": FILE, "out": results.json, "log": exercise.log}` in JSON (`serve`); it writes
+a line of its stdin, `{"exercise": FILE, "out": results.json, "log": exercise.log}` in JSON (`serve`; a run's
+exercise adds `"ready": FILE`, created once the robot is reset and at rest: the grader then starts the node, and
+`"ended": FILE`, which the grader creates when the node has ended by itself); it writes
 that exercise's results file and check lines, then reads the next line, and ends at the end of its input. Starting
 a runner per exercise cost its imports, init_node and connections each time (2-4 s of wall time an exercise on a
 loaded machine).
@@ -26,8 +28,9 @@ import json
 import sys
 import time
 from pathlib import Path
+from typing import Callable, NamedTuple
 
-from lab_grader.checks import action_checks, service_checks
+from lab_grader.checks import action_checks, run_checks, service_checks
 from lab_grader.checks.verdicts import (
     CheckResult,
     Interrupted,
@@ -39,15 +42,33 @@ from lab_grader.checks.verdicts import (
 from lab_grader.suite_file import SuiteError, load_suite
 
 
+class CheckKind(NamedTuple):
+    """One kind of check: the CheckSpec field that names its target, how one is run `(check, suite, context,
+    found, runs) -> Verdict` (`found`: the services and actions found; `runs`: the recordings of the runs so far)
+    and its evidence when it was not run."""
+
+    field: str
+    run: Callable
+    not_run_evidence: Callable
+
+
+CHECK_KINDS = (
+    CheckKind("run", lambda check, suite, context, found, runs: run_checks.run_run_check(check, suite, context, runs),
+              lambda check: run_checks.evidence_of(check, None)),
+    CheckKind("action", lambda check, suite, context, found, runs: action_checks.run_action_check(
+        check, suite, context, found.get(check.action)), lambda check: action_checks.evidence_of(check, None)),
+    CheckKind("service", lambda check, suite, context, found, runs: service_checks.run_check(
+        check, suite, context, found.get(check.service)),
+        lambda check: service_checks.evidence_of(check, None, None)),
+)
+
+
+def kind_of(check) -> CheckKind:
+    return next(kind for kind in CHECK_KINDS if getattr(check, kind.field) is not None)
+
+
 def not_run_evidence(check):
-    return (action_checks.evidence_of(check, None) if check.action is not None
-            else service_checks.evidence_of(check, None, None))
-
-
-def run_one(check, suite, context, found) -> Verdict:
-    if check.action is not None:
-        return action_checks.run_action_check(check, suite, context, found.get(check.action))
-    return service_checks.run_check(check, suite, context, found.get(check.service))
+    return kind_of(check).not_run_evidence(check)
 
 
 def run_suite(suite, make_context, check_timeout_s=None, log=print):
@@ -56,6 +77,7 @@ def run_suite(suite, make_context, check_timeout_s=None, log=print):
     services = {spec.name: {"expected_type": spec.type, "found": None, "found_by": None, "found_type": None,
                             "note": "not looked up"} for spec in suite.services + suite.actions}
     found = {}
+    runs = {}
     results = []
     context = None
     setup_error = None
@@ -91,7 +113,7 @@ def run_suite(suite, make_context, check_timeout_s=None, log=print):
             if check_timeout_s is not None:
                 check = check._replace(timeout_s=check_timeout_s)
             try:
-                verdict = run_one(check, suite, context, found)
+                verdict = kind_of(check).run(check, suite, context, found, runs)
             except (Interrupted, KeyboardInterrupt):
                 interrupted = True
                 verdict = Verdict.errored("not run: the runner was interrupted", not_run_evidence(check))
@@ -116,6 +138,7 @@ def exercise_suite(suite, node):
         raise SuiteError("{}: no exercise is served by a file named {} (files: {})".format(
             suite.path.name, node, ", ".join(suite.nodes)))
     return suite._replace(services=exercise.services, actions=exercise.actions,
+                          runs=(exercise.run,) if exercise.run is not None else (),
                           checks=tuple(check for check in suite.checks if check.id in exercise.check_ids))
 
 
@@ -143,10 +166,13 @@ def serve(suite, make_context, lines, check_timeout_s=None, log=print):
         try:
             command = json.loads(line)
             exercise, out, log_path = command["exercise"], Path(command["out"]), Path(command["log"])
+            ready, ended = command.get("ready"), command.get("ended")
             part = exercise_suite(suite, exercise)
         except (ValueError, KeyError, TypeError) as error:
             raise SuiteError("not a command {{\"exercise\", \"out\", \"log\"}}: {!r} ({}: {})".format(
                 line.strip(), type(error).__name__, error)) from None
+        if not isinstance(context, Exception):
+            context.ready_path, context.ended_path = ready, ended
         with open(log_path, "a") as exercise_log:
             document = run_suite(part, shared_context, check_timeout_s,
                                  log=lambda text: print(text, file=exercise_log, flush=True))

@@ -1,10 +1,10 @@
-"""week6_vision.colour_search: turn while the colour is out of view, centre it proportionally, stop and report,
+"""week6_vision.pillar_search: turn while the colour is out of view, centre it proportionally, stop and report,
 pause, then the next colour; give up after a turn and a quarter; done after the last."""
 import math
 
 import pytest
 
-from week6_vision.colour_search import ColourSearch
+from week6_vision.pillar_search import ColourSearch
 
 
 def test_turns_anticlockwise_until_the_colour_is_in_view_then_centres_it():

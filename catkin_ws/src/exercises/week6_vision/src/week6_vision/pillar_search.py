@@ -7,6 +7,9 @@ half-width (-1 at the left edge, +1 at the right, None when that colour is not i
 time in the node) and returns a `Step`: the angular velocity to command and, when something happened, an event.
 A colour not in view within one full turn plus a quarter (`give_up_s` = 1.25 x 2 pi / turn_speed) is given up
 with a "not found" event. The step that ends the last colour's pause (or gives it up) has done=True.
+
+Named apart from the node nodes/colour_search.py: with two colour_search.py files in the package (and every .py
+file executable, as the course has students make them) `rosrun week6_vision colour_search.py` would ask which.
 """
 import math
 from typing import NamedTuple, Optional

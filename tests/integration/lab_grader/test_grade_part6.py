@@ -1,0 +1,108 @@
+"""Calibration of suites/part6.yaml: `rosrun lab_grader grade --suite part6` on three sample submissions in one grade
+run (two at a time, the simulator at REAL_TIME_FACTOR), each a marker's verdict stated in its test:
+- the lab's week6_vision (colour_search.py, line_follower.py) scores full marks;
+- a package written in the course template's habits (student_style/part6_course_template: Tb3Move from a tb3.py
+  beside the nodes in src/, no catkin_install_python, crops and a centroid band in pixels of the 1920x1080 image,
+  a 5 Hz rospy.Rate loop with a 30-loop stop, kp = -0.001 per pixel, cv2.imshow on every frame) scores full marks;
+- a careless package (week6_vision with red's threshold for every colour and a line follower that never steers)
+  fails the two colour-search checks, stopping facing red, and the line checks, leaving the line.
+Each grades both runs: the colour search in coloured_pillars, then the line follower on the line_following track
+in a simulator of its own. The reports render with a picture per world."""
+import json
+import os
+import subprocess
+
+import pytest
+
+from .sample_submissions import make_submission
+
+GRADE_TIMEOUT_S = 900
+pytestmark = pytest.mark.timeout(GRADE_TIMEOUT_S + 60)
+CLASS = ("part6_reference", "part6_course_template", "part6_careless")
+REAL_TIME_FACTOR = "2"   # 1920x1080 frames at 10 per sim second: the simulator and a node each take most of a core
+COLOUR_CHECKS = ("colour_search_blue", "colour_search_every_pillar")
+LINE_CHECKS = ("line_progress", "line_mean_distance", "line_never_leaves")
+
+
+@pytest.fixture(scope="module")
+def graded(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("part6_class")
+    for name in CLASS:
+        make_submission(name, folder)
+    out = tmp_path_factory.mktemp("part6_grades")
+    run = subprocess.run(["rosrun", "lab_grader", "grade", str(folder), "--suite", "part6", "--out", str(out),
+                          "--jobs", "2", "--rtf", REAL_TIME_FACTOR], env=dict(os.environ), capture_output=True,
+                         text=True, timeout=GRADE_TIMEOUT_S)
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+    return out, {path.parent.name: json.loads(path.read_text()) for path in out.glob("*/result.json")}
+
+
+def by_id(result):
+    return {check["id"]: check for check in result["checks"]}
+
+
+def all_pass(result):
+    assert {check["verdict"] for check in result["checks"]} == {"pass"}, json.dumps(result["checks"], indent=1)[:4000]
+    assert result["score"] == result["max_score"] == 100
+
+
+def stops_facing(check):
+    """[(the landmark nearest the heading, its bearing in deg)] of each stop in a colour check's evidence."""
+    return [(stop["nearest"], stop["bearing_deg"]) for stop in check["evidence"]["stops"]]
+
+
+@pytest.mark.slow
+def test_the_reference_stops_facing_every_pillar_and_follows_the_line(graded):
+    result = graded[1]["part6_reference"]
+    all_pass(result)
+    checks = by_id(result)
+    faced = stops_facing(checks["colour_search_every_pillar"])
+    assert {name for name, _ in faced} == {"red", "green", "turquoise", "blue"}
+    assert all(abs(bearing) < 9 for _, bearing in faced), faced      # it centres the pillar in its camera's view
+    line = checks["line_progress"]["evidence"]["line"]
+    assert line["progress_m"] > 3.5 and line["mean_distance_m"] < 0.03 and line["left_after_s"] is None, line
+    nodes = {node["exercise"]: node for node in result["nodes"]}
+    assert nodes["colour_search.py"]["found_by"] == "the course's file name"
+    assert not nodes["colour_search.py"]["crashed"], "it exits by itself after the last pillar: no crash"
+
+
+@pytest.mark.slow
+def test_the_course_templates_habits_get_full_marks(graded):
+    result = graded[1]["part6_course_template"]
+    all_pass(result)
+    checks = by_id(result)
+    faced = stops_facing(checks["colour_search_every_pillar"])
+    # clockwise from the start: blue first; it stops with the pillar up to 100 px right of its crop's middle
+    assert faced[0][0] == "blue" and all(-12 < bearing < 0 for _, bearing in faced), faced
+    assert all(stop["still_s"] > 5 for stop in checks["colour_search_every_pillar"]["evidence"]["stops"][:3])
+    line = checks["line_mean_distance"]["evidence"]["line"]
+    assert line["mean_distance_m"] < 0.08 and line["max_distance_m"] < 0.15, line
+    assert {node["file"] for node in result["nodes"]} == {"part6_course_template/src/colour_search.py",
+                                                          "part6_course_template/src/line_follower.py"}
+    assert all(node["running_at_end"] for node in result["nodes"])
+
+
+@pytest.mark.slow
+def test_a_wrong_colour_and_a_follower_that_never_steers_fail_those_checks(graded):
+    result = graded[1]["part6_careless"]
+    checks = by_id(result)
+    for check_id in COLOUR_CHECKS:
+        colour = checks[check_id]
+        assert colour["verdict"] == "fail", colour
+        assert colour["reason"].startswith("expected to stop (still for 1 s) facing "), colour["reason"]
+        assert "blue" in colour["reason"] and "facing red" in colour["reason"], colour["reason"]
+    assert {name for name, bearing in stops_facing(checks["colour_search_blue"]) if abs(bearing) < 12} == {"red"}
+    for check_id in LINE_CHECKS:
+        assert checks[check_id]["verdict"] == "fail", checks[check_id]
+    line = checks["line_progress"]["evidence"]["line"]
+    assert line["progress_m"] < 3.0 and line["left_after_s"] is not None, line
+    assert "it got more than 0.15 m from it" in checks["line_progress"]["reason"]
+    assert result["score"] == 0
+
+
+@pytest.mark.slow
+def test_the_report_draws_each_world(graded):
+    out = graded[0]
+    html = (out / "part6_reference" / "report.html").read_text()
+    assert "id='trajectory'" in html and "id='trajectory-2'" in html
+    assert "trajectories in tuos_simulations/worlds/line_following.yaml" in html
