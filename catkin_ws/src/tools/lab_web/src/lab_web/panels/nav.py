@@ -2,13 +2,15 @@
 (the page places odom-frame items through map -> odom): the global and local costmaps (full grids and their
 costmap_updates patches, in RViz's costmap colours), the global plan (NavfnROS/plan) and the local plan
 (DWAPlannerROS/local_plan), amcl's particle cloud and pose with its covariance, move_base's current goal and
-explore_lite's frontiers (/explore/frontiers: POINTS of each frontier's cells and a SPHERE at each, by marker id,
-DELETE and DELETEALL honoured as RViz's MarkerArray display does)."""
+explore_lite's frontiers (explore/frontiers: POINTS of each frontier's cells and a SPHERE at each, by marker id,
+DELETE and DELETEALL honoured as RViz's MarkerArray display does). Each topic is the picked robot's own where it
+publishes one (/tb3_0/move_base/..., /tb3_0/particlecloud), else the global one (ros_context.own_or_global); a
+display keeps what it shows until the new topic's first message replaces it (amcl and move_base latch theirs or
+send them within a second)."""
 import threading
 
 import genpy
 import numpy as np
-import rospy
 from geometry_msgs.msg import PoseArray, PoseStamped, PoseWithCovarianceStamped
 from map_msgs.msg import OccupancyGridUpdate
 from nav_msgs.msg import OccupancyGrid, Path
@@ -17,7 +19,7 @@ from visualization_msgs.msg import Marker, MarkerArray
 
 from lab_web import occupancy, packed, scene
 from lab_web.panels.base import Panel, Versioned
-from lab_web.ros_context import now_s
+from lab_web.ros_context import FollowedSubscribers, now_s
 
 COSTMAPS = {"global": "move_base/global_costmap/costmap", "local": "move_base/local_costmap/costmap"}
 PLANS = {"global": "move_base/NavfnROS/plan", "local": "move_base/DWAPlannerROS/local_plan"}
@@ -134,22 +136,33 @@ class NavPanel(Panel):
         self._staged = {}        # item -> its value changed since the last publication (NAV_PERIOD_S)
         self._frontiers = {}     # (ns, id) -> the page's marker
         self._nav_throttle = Throttle(NAV_PERIOD_S)
-        self._subscribers = []
+        specs = []
         for name, topic in COSTMAPS.items():
-            self._subscribers += [
-                rospy.Subscriber(ros.name(topic), NumpyOccupancyGrid, self._on_costmap, callback_args=name,
-                                 queue_size=1, buff_size=2 ** 24),
-                rospy.Subscriber(ros.name(topic + "_updates"), NumpyOccupancyGridUpdate, self._on_costmap_update,
-                                 callback_args=name, queue_size=5, buff_size=2 ** 24)]
+            specs += [(topic, NumpyOccupancyGrid, lambda grid, _topic, name=name: self._on_costmap(grid, name),
+                       {"queue_size": 1, "buff_size": 2 ** 24}),
+                      (topic + "_updates", NumpyOccupancyGridUpdate,
+                       lambda update, _topic, name=name: self._on_costmap_update(update, name),
+                       {"queue_size": 5, "buff_size": 2 ** 24})]
         for name, topic in PLANS.items():
-            self._subscribers.append(rospy.Subscriber(ros.name(topic), Path, self._on_plan, callback_args=name,
-                                                      queue_size=1))
-        self._subscribers += [
-            rospy.Subscriber("/particlecloud", PackedPoseArray, self._on_particles, queue_size=1, buff_size=2 ** 24),
-            rospy.Subscriber("/amcl_pose", PoseWithCovarianceStamped, self._on_amcl_pose, queue_size=1),
-            rospy.Subscriber(ros.name("move_base/current_goal"), PoseStamped, self._on_goal, queue_size=1),
-            rospy.Subscriber("/explore/frontiers", MarkerArray, self._on_frontiers, queue_size=1),
+            specs.append((topic, Path, lambda path, _topic, name=name: self._on_plan(path, name), {"queue_size": 1}))
+        specs += [
+            ("particlecloud", PackedPoseArray, lambda cloud, _topic: self._on_particles(cloud),
+             {"queue_size": 1, "buff_size": 2 ** 24}),
+            ("amcl_pose", PoseWithCovarianceStamped, lambda pose, _topic: self._on_amcl_pose(pose), {"queue_size": 1}),
+            ("move_base/current_goal", PoseStamped, lambda goal, _topic: self._on_goal(goal), {"queue_size": 1}),
+            ("explore/frontiers", MarkerArray, lambda array, _topic: self._on_frontiers(array), {"queue_size": 1}),
         ]
+        self._followed = FollowedSubscribers(ros, specs, self._on_switch)
+
+    def on_graph(self, graph):
+        self._followed.on_graph(graph)
+
+    def _on_switch(self, relative, _topic):
+        """A costmap now comes from another robot's move_base: its first grid goes out at once."""
+        for name, topic in COSTMAPS.items():
+            if relative == topic:
+                with self._lock:
+                    self._costmaps[name] = Costmap()
 
     def frames(self, session):
         with self._lock:

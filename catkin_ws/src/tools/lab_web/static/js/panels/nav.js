@@ -4,7 +4,8 @@
  * local plan (yellow), the particle cloud as arrows (RViz's PoseArray: red-orange, 0.3 m), amcl's pose with its
  * position covariance as an ellipse of one standard deviation, and move_base's current goal (magenta arrow).
  * explore_lite's frontiers as its markers say (points of each frontier's cells, a sphere at each, in their colours).
- * Each item is drawn in its own frame: the fixed frame as it is, odom through map -> odom; others not at all.
+ * Each item is drawn in its own frame: the fixed frame as it is, the picked robot's odom through map -> odom; others
+ * not at all.
  */
 import {addMessage, app, decodeFloat32, decodePng, isNumber, labView, requestRender} from '../core.js';
 import {addLayer, currentView, drawGridImage, strokeLine, tracePath, worldToPixel} from '../view.js';
@@ -53,10 +54,15 @@ function fixedFrame() {
   return (app.fixed && app.fixed.frame) || 'odom';
 }
 
+/** The picked robot's odom frame ("odom", or "tb3_0/odom" with its tf_prefix). */
+function odomFrame() {
+  return (app.fixed && app.fixed.odom_frame) || 'odom';
+}
+
 /** Whether an item in `frame` belongs to the layer drawing `layerFrame` ('fixed' or 'odom'). */
 function inLayer(frame, layerFrame) {
   if (frame === fixedFrame()) return layerFrame === 'fixed';
-  return frame === 'odom' && layerFrame === 'odom';
+  return frame === odomFrame() && layerFrame === 'odom';
 }
 
 function arrow(ctx, pose, lengthPx, color, width) {
