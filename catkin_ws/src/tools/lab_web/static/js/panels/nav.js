@@ -8,7 +8,7 @@
  * not at all.
  */
 import {addMessage, app, decodeFloat32, decodePng, isNumber, labView, requestRender} from '../core.js';
-import {addLayer, currentView, drawGridImage, tracePath, worldToPixel} from '../view.js';
+import {addLayer, currentView, drawGridImage, strokeLine, tracePath, worldToPixel} from '../view.js';
 
 const COSTMAP_ALPHA = 0.7;
 const COLORS = {global: '#00b000', local: '#e0c000', particle: 'rgb(255, 25, 0)', amcl: '#4060ff',
@@ -65,36 +65,17 @@ function inLayer(frame, layerFrame) {
   return frame === odomFrame() && layerFrame === 'odom';
 }
 
-/** Adds an arrow from `pose` ([x, y, yaw]), `lengthPx` long, to the current path: its shaft and two head strokes. */
-function traceArrow(ctx, pose, lengthPx) {
+function arrow(ctx, pose, lengthPx, color, width) {
   const [x, y, yaw] = pose;
   const [ax, ay] = worldToPixel(x, y);
   const [bx, by] = [ax + lengthPx * Math.cos(yaw), ay - lengthPx * Math.sin(yaw)];
-  ctx.moveTo(ax, ay);
-  ctx.lineTo(bx, by);
+  ctx.lineWidth = width;
+  strokeLine(ctx, ax, ay, bx, by, color);
   const head = Math.max(lengthPx * 0.3, 3);
   for (const side of [-1, 1]) {
     const back = yaw + Math.PI - side * 0.5;
-    ctx.moveTo(bx, by);
-    ctx.lineTo(bx + head * Math.cos(back), by - head * Math.sin(back));
+    strokeLine(ctx, bx, by, bx + head * Math.cos(back), by - head * Math.sin(back), color);
   }
-}
-
-function arrow(ctx, pose, lengthPx, color, width) {
-  ctx.lineWidth = width;
-  ctx.strokeStyle = color;
-  ctx.beginPath();
-  traceArrow(ctx, pose, lengthPx);
-  ctx.stroke();
-}
-
-/** The particle cloud as one path, stroked once: thousands of arrows, redrawn with every state frame. */
-function drawParticles(ctx, poses, lengthPx) {
-  ctx.lineWidth = 2;
-  ctx.strokeStyle = COLORS.particle;
-  ctx.beginPath();
-  for (let i = 0; i + 2 < poses.length; i += 3) traceArrow(ctx, [poses[i], poses[i + 1], poses[i + 2]], lengthPx);
-  ctx.stroke();
 }
 
 /** One standard deviation of the position: the ellipse's axes are the square roots of the covariance's
@@ -139,7 +120,10 @@ function drawLayer(ctx, layerFrame) {
   }
   const scale = currentView().scale;
   if (nav.particles && inLayer(nav.particles.frame, layerFrame)) {
-    drawParticles(ctx, nav.particles.poses, PARTICLE_LENGTH_M * scale);
+    const poses = nav.particles.poses;
+    for (let i = 0; i + 2 < poses.length; i += 3) {
+      arrow(ctx, [poses[i], poses[i + 1], poses[i + 2]], PARTICLE_LENGTH_M * scale, COLORS.particle, 2);
+    }
   }
   if (nav.amcl && inLayer(nav.amcl.frame, layerFrame) && nav.amcl.covariance.every(isNumber)) drawAmcl(ctx, nav.amcl);
   if (nav.goal && inLayer(nav.goal.frame, layerFrame)) arrow(ctx, nav.goal.pose, 0.5 * scale, COLORS.goal, 4);
