@@ -385,3 +385,50 @@ def test_a_growing_slam_map_keeps_the_page_heap_flat_and_the_last_map_is_drawn_c
         assert drawn.shape == expected.shape and int(numpy.any(drawn != expected, axis=2).sum()) == 0
     finally:
         show_map(page, occupancy_grid())   # the module's own map again, for the tests that read its pixels
+
+
+OWN_OCCUPIED_CELL, OWN_PARTICLE = (5, 10), (0.5, -0.5, 0.0)
+
+
+def test_the_map_and_navigation_displays_follow_the_picked_robot_to_its_own_topics(page):
+    """A robot with its own SLAM and amcl (/tb3_1/map in frame tb3_1/map, /tb3_1/particlecloud): picking it shows
+    its map, fixed frame and particles instead of the global ones; picking the global robot shows /map again."""
+    probe = page.probe
+    own = occupancy_grid()
+    own["header"]["frame_id"] = "tb3_1/map"
+    own["data"][OCCUPIED_CELL[1] * SIZE + OCCUPIED_CELL[0]] = 0
+    own["data"][OWN_OCCUPIED_CELL[1] * SIZE + OWN_OCCUPIED_CELL[0]] = 100
+    cloud = {"header": {"frame_id": "tb3_1/map"}, "poses": [stamped_pose(*OWN_PARTICLE)]}
+    for topic, kind, message in (("/tb3_1/odom", "nav_msgs/Odometry", odometry(*SECOND_ROBOT, "tb3_1/")),
+                                 ("/tb3_1/map", "nav_msgs/OccupancyGrid", own),
+                                 ("/tb3_1/particlecloud", "geometry_msgs/PoseArray", cloud)):
+        probe.publish(topic, kind, message, wait_s=0)   # advertised: the server sees the robot's own topics
+    picker = page.driver.find_element(By.ID, "robot-pick")
+    wait_until(lambda: picker.is_displayed() and "/tb3_1" in page.script("return labView.robots.robots;"), 10,
+               "the robot picker")
+    try:
+        Select(picker).select_by_value("/tb3_1")
+
+        def own_displays_shown():
+            probe.publish("/tb3_1/map", "nav_msgs/OccupancyGrid", own, wait_s=0.5)
+            probe.publish("/tb3_1/particlecloud", "geometry_msgs/PoseArray", cloud, wait_s=0.5)
+            return page.script("return labView.fixedFrame === 'tb3_1/map' && !!labView.nav && "
+                               "!!labView.nav.particles && labView.nav.particles.frame === 'tb3_1/map';")
+
+        wait_until(own_displays_shown, 20, "the page to show tb3_1's map and particles", interval_s=0.2)
+        assert pixel(page, *cell_centre(*OWN_OCCUPIED_CELL)) == BLACK
+        assert pixel(page, *cell_centre(*OCCUPIED_CELL)) == WHITE          # /map's occupied cell is not drawn
+        x, y, _ = OWN_PARTICLE
+        assert close_to(pixel(page, x + 0.2, y), PARTICLE_RGB)
+        assert page_errors(page) == []
+    finally:
+        Select(picker).select_by_value("/")
+
+    def global_map_shown():
+        page.probe.publish("/map", "nav_msgs/OccupancyGrid", occupancy_grid(), wait_s=0.5)
+        page.probe.publish("/tf", "tf2_msgs/TFMessage", transform("map", "odom", *MAP_TO_ODOM), wait_s=0.5)
+        odom = page.script("return labView.fixedFrame === 'map' && app.fixed.odom;")
+        return bool(odom) and abs(odom[2] - MAP_TO_ODOM[2]) < 1e-3
+
+    wait_until(global_map_shown, 20, "the page to show /map again", interval_s=0.2)
+    assert pixel(page, *cell_centre(*OCCUPIED_CELL)) == BLACK

@@ -1,12 +1,14 @@
 """The robot picker's logic: which namespaces hold a robot (a publisher of nav_msgs/Odometry on <ns>/odom), and a
-pick_robot command validated like the others and refused for a namespace without a robot."""
+pick_robot command validated like the others and refused for a namespace without a robot; the topics and odom
+frame the map and navigation displays follow for the picked robot."""
 import json
 
 import pytest
 
 from lab_web.commands import ProtocolError, parse_command
+from lab_web.panels.map import odom_frame
 from lab_web.panels.robots import RobotsPanel, robot_namespaces
-from lab_web.ros_context import GraphState, canonical_namespace
+from lab_web.ros_context import GraphState, canonical_namespace, own_or_global
 
 ODOMETRY = "nav_msgs/Odometry"
 
@@ -49,3 +51,11 @@ def test_a_robot_is_picked_only_among_those_running():
         panel.handle(None, "pick_robot", {"namespace": "/tb3_7"})
     with pytest.raises(ProtocolError, match="namespace must be a name"):
         parse_command(json.dumps({"type": "pick_robot", "namespace": "../x"}), RobotsPanel.COMMANDS)
+
+
+def test_a_display_follows_the_robots_own_topic_where_it_is_published_else_the_global_one():
+    published = {"/tb3_0/map", "/map", "/particlecloud"}
+    assert own_or_global("/tb3_0", "map", published) == "/tb3_0/map"
+    assert own_or_global("/tb3_0", "particlecloud", published) == "/particlecloud"
+    assert own_or_global("", "map", published) == "/map"
+    assert odom_frame("/tb3_0") == "tb3_0/odom" and odom_frame("") == "odom"

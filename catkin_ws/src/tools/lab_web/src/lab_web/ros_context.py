@@ -42,6 +42,58 @@ def canonical_namespace(namespace):
     return rosgraph.names.canonicalize_name("/" + namespace.strip("/")).rstrip("/") if namespace.strip("/") else ""
 
 
+def own_or_global(namespace, relative, published):
+    """The topic a display of the robot in `namespace` shows: the robot's own `<namespace>/<relative>` when something
+    publishes it (a map or navigation stack per robot, as multi-robot SLAM launches them), else the global
+    `/<relative>` a single stack uses."""
+    own = "{}/{}".format(namespace, relative)
+    return own if namespace and own in published else "/" + relative
+
+
+class FollowedSubscribers:
+    """Subscribers to a robot's own topics where it has them, else the global ones (own_or_global), re-made when
+    the robot is picked or its topics appear or go (`on_graph`). `specs`: (relative name, message class, callback,
+    Subscriber options); the callback gets the message and the name it came on. `on_switch(relative, name)` runs
+    after a subscriber moved to another topic."""
+
+    def __init__(self, ros, specs, on_switch=None):
+        self._ros = ros
+        self._specs = specs
+        self._on_switch = on_switch
+        self._lock = threading.Lock()
+        self._published = set()
+        self._subscribers = {}    # relative name -> (topic, rospy.Subscriber)
+        self.update()
+        ros.follow_robot(lambda _old: self.update())
+
+    def name(self, relative):
+        """The topic `relative` is followed on now."""
+        with self._lock:
+            return self._subscribers[relative][0]
+
+    def on_graph(self, graph):
+        with self._lock:
+            self._published = {topic for topic, nodes in graph.publishers if nodes}
+        self.update()
+
+    def update(self):
+        switched = []
+        with self._lock:
+            for relative, message_class, callback, options in self._specs:
+                topic = own_or_global(self._ros.namespace, relative, self._published)
+                old = self._subscribers.get(relative)
+                if old is not None and old[0] == topic:
+                    continue
+                if old is not None:
+                    old[1].unregister()
+                    switched.append((relative, topic))
+                self._subscribers[relative] = (topic, rospy.Subscriber(topic, message_class, callback, topic,
+                                                                       **options))
+        for relative, topic in switched:
+            if self._on_switch is not None:
+                self._on_switch(relative, topic)
+
+
 class RosContext:
     """`robot_namespace`: the robot whose topics the panels show first ("": the global namespace; a page may pick
     another, `pick_robot`); `service_timeout_s`: how long a service form call may take before it is abandoned."""

@@ -159,6 +159,13 @@ export function isPageKey(event) {
   return !isTypingTarget(event.target) && !event.ctrlKey && !event.altKey && !event.metaKey;
 }
 
+/** The values of base64 little-endian float32 data (lab_web.packed), or null when it is not whole float32s. */
+export function decodeFloat32(base64) {
+  if (typeof base64 !== 'string') return null;
+  const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
+  return bytes.length % 4 === 0 ? new Float32Array(bytes.buffer) : null;
+}
+
 const decoding = new Map();      // key -> sequence number of the newest image asked for
 
 /** Decodes a PNG given as base64 once and calls `done(image)`, unless a newer one under `key` came meanwhile. */

@@ -9,7 +9,7 @@ from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
 from tf2_msgs.msg import TFMessage
 
-from lab_web import scene
+from lab_web import packed, scene
 from lab_web.panels.base import Panel, Versioned
 from lab_web.ros_context import now_s
 
@@ -22,7 +22,8 @@ class RobotPanel(Panel):
         "state": '{"stamp_ms": wall ms when the newest state arrived, "sim_time": s | null, "rtf": float | null, '
                  '"robot": {"x", "y", "yaw", "v", "w"} | null, "trail": {"reset": bool, "points": [[x, y], ...]} '
                  '(reset true: replace the page\'s trail with points; false: append them; a page keeps at most '
-                 '3000 points), "scan": [[x, y], ...] (world-frame LiDAR hits of the newest sweep)}  <= 25 per second',
+                 '3000 points), "scan": base64 of little-endian float32 x, y per world-frame LiDAR hit of the newest '
+                 'sweep}  <= 25 per second',
     }
 
     def __init__(self, ros):
@@ -31,7 +32,7 @@ class RobotPanel(Panel):
         self.state = Versioned()
         self.trail = scene.Trail()
         self._odom = None
-        self._scan_points = []
+        self._scan_points = ""    # packed.points_base64 of the newest sweep's hits
         self._clock_samples = []
         self._static_transforms = {}
         self._tf_static = rospy.Subscriber("/tf_static", TFMessage, self._on_tf_static, queue_size=10)
@@ -60,7 +61,7 @@ class RobotPanel(Panel):
         self._subscribe()
         with self._lock:
             self._odom = None
-            self._scan_points = []
+            self._scan_points = ""
             self.trail.clear()
         self._publish_state()
 
@@ -97,8 +98,8 @@ class RobotPanel(Panel):
             offset = scene.sensor_offset(self._static_transforms, base_frame, scan.header.frame_id)
         if offset is None:
             return   # /tf_static has not named the LiDAR's place on the robot yet
-        points = scene.scan_points(scan.ranges, scan.angle_min, scan.angle_increment, scan.range_min,
-                                   scan.range_max, scene.compose(robot, offset))
+        points = packed.points_base64(scene.scan_points(scan.ranges, scan.angle_min, scan.angle_increment,
+                                                        scan.range_min, scan.range_max, scene.compose(robot, offset)))
         with self._lock:
             if topic != self._scan_topic:
                 return

@@ -2,7 +2,8 @@
 tb3_sim's and Gazebo's TurtleBot3s do: multi_turtlebot3.launch's /tb3_0, /tb3_1, /tb3_2) and which one lab_web
 shows and drives. Picking one moves the robot, trail, LiDAR, camera and teleop panels to its namespace for every
 open page (one robot at a time, as one RViz window follows the robot whose topics its displays name); the map and
-navigation displays stay on the global topics a single navigation stack uses. No ROS import."""
+navigation displays move to the robot's own topics where it has them (/tb3_0/map, /tb3_0/particlecloud, ...), else
+stay on the global ones a single stack uses. No ROS import."""
 import threading
 
 from lab_web import commands

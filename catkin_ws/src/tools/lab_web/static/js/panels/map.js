@@ -57,7 +57,7 @@ function onHello(frame) {
   mapImage = null;
   app.mapRegion = null;
   app.fixed = null;
-  labView.fixedFrame = frame.world_frame === 'map' ? 'map' : 'odom';
+  labView.fixedFrame = typeof frame.world_frame === 'string' ? frame.world_frame : 'odom';
 }
 
 export default {name: 'map', setup, onHello, frames: {map: onMap, fixed: onFixed}};

@@ -4,9 +4,10 @@
  * local plan (yellow), the particle cloud as arrows (RViz's PoseArray: red-orange, 0.3 m), amcl's pose with its
  * position covariance as an ellipse of one standard deviation, and move_base's current goal (magenta arrow).
  * explore_lite's frontiers as its markers say (points of each frontier's cells, a sphere at each, in their colours).
- * Each item is drawn in its own frame: the fixed frame as it is, odom through map -> odom; others not at all.
+ * Each item is drawn in its own frame: the fixed frame as it is, the picked robot's odom through map -> odom; others
+ * not at all.
  */
-import {addMessage, app, decodePng, isNumber, labView, requestRender} from '../core.js';
+import {addMessage, app, decodeFloat32, decodePng, isNumber, labView, requestRender} from '../core.js';
 import {addLayer, currentView, drawGridImage, strokeLine, tracePath, worldToPixel} from '../view.js';
 
 const COSTMAP_ALPHA = 0.7;
@@ -14,7 +15,7 @@ const COLORS = {global: '#00b000', local: '#e0c000', particle: 'rgb(255, 25, 0)'
   goal: '#ff00ff'};
 const PARTICLE_LENGTH_M = 0.3;
 const costmaps = {};            // name -> {image, frame}
-let nav = null;
+let nav = null;                 // the items of every nav frame so far, particles' poses as a Float32Array
 
 function onCostmap(frame) {
   if (frame.error) {
@@ -28,9 +29,24 @@ function onCostmap(frame) {
   });
 }
 
+/** The particles' x, y, yaw per pose as one Float32Array (null if it does not add up to `count` poses). */
+function decodePoses(particles) {
+  const poses = decodeFloat32(particles.poses);
+  return poses && poses.length === particles.count * 3 ? poses : null;
+}
+
+/** A nav frame brings only the items that changed: the others stay as the earlier frames left them. */
 function onNav(frame) {
-  nav = frame;
-  labView.nav = frame;
+  const {plans, particles, ...rest} = frame;
+  delete rest.type;
+  nav = Object.assign(nav || {plans: {}, particles: null, amcl: null, goal: null, frontiers: []}, rest);
+  if (plans) Object.assign(nav.plans, plans);
+  if (particles) {
+    const poses = decodePoses(particles);
+    if (poses) nav.particles = {frame: particles.frame, poses};
+    else addMessage('particle cloud: its poses do not add up to its count');
+  }
+  labView.nav = nav;
   requestRender('world');
 }
 
@@ -38,10 +54,15 @@ function fixedFrame() {
   return (app.fixed && app.fixed.frame) || 'odom';
 }
 
+/** The picked robot's odom frame ("odom", or "tb3_0/odom" with its tf_prefix). */
+function odomFrame() {
+  return (app.fixed && app.fixed.odom_frame) || 'odom';
+}
+
 /** Whether an item in `frame` belongs to the layer drawing `layerFrame` ('fixed' or 'odom'). */
 function inLayer(frame, layerFrame) {
   if (frame === fixedFrame()) return layerFrame === 'fixed';
-  return frame === 'odom' && layerFrame === 'odom';
+  return frame === odomFrame() && layerFrame === 'odom';
 }
 
 function arrow(ctx, pose, lengthPx, color, width) {
@@ -99,7 +120,10 @@ function drawLayer(ctx, layerFrame) {
   }
   const scale = currentView().scale;
   if (nav.particles && inLayer(nav.particles.frame, layerFrame)) {
-    for (const pose of nav.particles.poses) arrow(ctx, pose, PARTICLE_LENGTH_M * scale, COLORS.particle, 2);
+    const poses = nav.particles.poses;
+    for (let i = 0; i + 2 < poses.length; i += 3) {
+      arrow(ctx, [poses[i], poses[i + 1], poses[i + 2]], PARTICLE_LENGTH_M * scale, COLORS.particle, 2);
+    }
   }
   if (nav.amcl && inLayer(nav.amcl.frame, layerFrame) && nav.amcl.covariance.every(isNumber)) drawAmcl(ctx, nav.amcl);
   if (nav.goal && inLayer(nav.goal.frame, layerFrame)) arrow(ctx, nav.goal.pose, 0.5 * scale, COLORS.goal, 4);
@@ -133,6 +157,7 @@ function setup() {
 
 function onHello() {
   nav = null;
+  labView.nav = null;
   for (const name of Object.keys(costmaps)) delete costmaps[name];
 }
 

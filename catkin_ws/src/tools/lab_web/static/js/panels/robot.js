@@ -2,7 +2,7 @@
  * The robot panel: the driven robot from `state` frames (its pose from /odom, its trail, the newest LiDAR sweep)
  * on the world canvas, and the sim time, real-time factor and state rate in the top bar.
  */
-import {$, app, isNumber, labView, recordLatency, requestRender, setText, updatePanels, validRobot} from '../core.js';
+import {$, app, decodeFloat32, isNumber, labView, recordLatency, requestRender, setText, updatePanels, validRobot} from '../core.js';
 import {COLORS, ROBOT_RADIUS_M, addLayer, currentView, strokeLine, tracePath, updateView, worldToPixel}
   from '../view.js';
 
@@ -15,7 +15,22 @@ function updateTrail(update) {
   if (app.trail.length > TRAIL_MAX_POINTS) app.trail = app.trail.slice(app.trail.length - TRAIL_MAX_POINTS);
 }
 
+let scanText = null;            // the newest sweep as sent, and as [[x, y], ...]
+let scanPoints = [];
+
+/** The sweep's hits as [[x, y], ...], decoded once per sweep (state frames repeat it until the next one). */
+function scanHits(base64) {
+  if (base64 !== scanText) {
+    const values = decodeFloat32(base64) || [];
+    scanPoints = [];
+    for (let i = 0; i + 1 < values.length; i += 2) scanPoints.push([values[i], values[i + 1]]);
+    scanText = base64;
+  }
+  return scanPoints;
+}
+
 function onState(frame) {
+  frame.scan = scanHits(frame.scan);
   app.state = frame;
   updateTrail(frame.trail);
   labView.frames += 1;

@@ -158,12 +158,8 @@ class CameraOutput(Output):
         return message
 
     def _compressed_image(self, reading):
-        message = self._header(CompressedImage(), reading.time_s)
+        message = self._header(JpegImage(reading.rgb), reading.time_s)
         message.format = JPEG_FORMAT
-        import cv2  # about 0.4 s to import: paid at the first compressed frame, not at every simulator start
-
-        bgr = cv2.cvtColor(reading.rgb, cv2.COLOR_RGB2BGR)
-        message.data = cv2.imencode(".jpg", bgr, [cv2.IMWRITE_JPEG_QUALITY, JPEG_QUALITY])[1].tobytes()
         return message
 
     def _camera_info(self, reading):
@@ -175,6 +171,31 @@ class CameraOutput(Output):
         message.R = list(IDENTITY_RECTIFICATION)
         message.P = list(self.intrinsics.p())
         return message
+
+
+class JpegImage(CompressedImage):
+    """sensor_msgs/CompressedImage of an RGB frame whose JPEG (quality JPEG_QUALITY, BGR samples as
+    compressed_image_transport writes) is encoded when `data` is first read: as the queued publisher's thread
+    serialises it, so the physics loop only renders (ros.publishers.QueuedPublisher). The frame is the renderer's
+    own new array, never written again."""
+
+    def __init__(self, rgb):
+        super().__init__()
+        self._rgb = rgb
+
+    @property
+    def data(self):
+        if self._rgb is not None:
+            import cv2  # about 0.4 s to import: paid at the first compressed frame, not at every simulator start
+
+            bgr = cv2.cvtColor(self._rgb, cv2.COLOR_RGB2BGR)
+            self._jpeg = cv2.imencode(".jpg", bgr, [cv2.IMWRITE_JPEG_QUALITY, JPEG_QUALITY])[1].tobytes()
+            self._rgb = None
+        return self._jpeg
+
+    @data.setter
+    def data(self, value):
+        self._rgb, self._jpeg = None, value
 
 
 def camera_scene(obstacles):
