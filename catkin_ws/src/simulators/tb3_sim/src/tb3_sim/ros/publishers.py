@@ -7,6 +7,7 @@ date by rospy's own connect and disconnect callbacks (SubscribeListener) and rea
 """
 
 import select
+import socket
 import threading
 import warnings
 
@@ -66,7 +67,8 @@ class QueuedPublisher(CountedPublisher):
         except (OSError, ValueError):
             return   # a socket closed meanwhile: rospy's own clean-up has it
         for sock in departed:
-            sockets[sock].close()   # rospy's clean-up callback removes the connection: peer_unsubscribe
+            if _at_end(sock):
+                sockets[sock].close()   # rospy's clean-up callback removes the connection: peer_unsubscribe
 
     def _hand_over(self, message):
         with self._ready:
@@ -85,6 +87,17 @@ class QueuedPublisher(CountedPublisher):
                 if shutting_down():
                     return   # Ctrl-C closed the publisher
                 rospy.logerr("tb3_sim could not publish %s: %s", self._publisher.resolved_name, error)
+
+
+def _at_end(sock):
+    """Whether a socket select() found readable was closed by its peer (a peek reads nothing or fails), rather
+    than holding bytes a subscriber sent after all."""
+    try:
+        return sock.recv(1, socket.MSG_PEEK | socket.MSG_DONTWAIT) == b""
+    except BlockingIOError:
+        return False
+    except OSError:
+        return True
 
 
 def output_publisher(topic):
