@@ -38,6 +38,13 @@ def other_box(work_root):
         yield box
 
 
+@pytest.fixture(scope="module")
+def grader_env(ros_master):
+    """The ROS terminal's environment, for `rosrun lab_grader grade` (which starts its own masters inside the
+    sandboxes), bound to the module's private master."""
+    return dict(os.environ)
+
+
 @pytest.fixture
 def env():
     """The ROS terminal's environment, bound to the loopback master every box has at 11311."""

@@ -20,9 +20,9 @@ from lab_grader.sandbox import GRADER_SLOTS, STUDENT_UID_BASE
 from lab_grader.sandbox_process import TRUNCATED_MARKER
 
 from .conftest import LAB_ROOT
+from .grading import check, grade, results
 from .hostile_code import CHILDREN, REPORT_PREFIX, SLEEP_SECONDS
 from .sample_submissions import make_submission
-from .test_grade_class import check, grade, results
 
 SANDBOX_UIDS = range(STUDENT_UID_BASE, STUDENT_UID_BASE + GRADER_SLOTS)
 HOSTILE = ("forks_children", "reaches_network", "snoops", "prints_megabytes", "hangs_in_the_callback", "busy_waits")
@@ -95,13 +95,7 @@ def report(out, student):
 
 
 @pytest.fixture(scope="module")
-def env(ros_master):
-    """The ROS terminal's environment; the grader starts its own masters inside the sandboxes."""
-    return dict(os.environ)
-
-
-@pytest.fixture(scope="module")
-def hostile(env, ros_master, tmp_path_factory):
+def hostile(grader_env, ros_master, tmp_path_factory):
     folder = tmp_path_factory.mktemp("hostile_class")
     out = tmp_path_factory.mktemp("hostile_grades")
     token, marker = secrets.token_hex(16), "snooped-" + secrets.token_hex(8)
@@ -126,7 +120,7 @@ def hostile(env, ros_master, tmp_path_factory):
     watch.start()
     started = time.monotonic()
     try:
-        output = grade(env, folder, "--suite", suite, "--out", out, "--jobs", "2", "--rtf", "2")
+        output = grade(grader_env, folder, "--suite", suite, "--out", out, "--jobs", "2", "--rtf", "2")
     finally:
         watch.done.set()
         watch.join()

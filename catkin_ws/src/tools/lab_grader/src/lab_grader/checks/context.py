@@ -9,7 +9,9 @@ the student's nodes. It
 - reads the robot through tb3_sim's private ground-truth channel (lab_grader.checks.ground_truth), never through
   /odom, /clock, /scan or /gazebo/reset_world, which any node on the master can forge, pause or serve itself: the
   simulator's sim time, the robot's true pose and speeds, a reset and a noise-free front distance;
-- prepares the robot before each check (`prepare`): zero /cmd_vel (tb3_sim holds the last command), a reset
+- prepares the robot before each check (`prepare`): waits until the simulator is connected to every publisher
+  of /cmd_vel (at most COMMANDS_HEARD_WALL_S: a node's first command, published before the simulator connected to
+  it, would be lost; lab_grader.checks.command_links), zeroes /cmd_vel (tb3_sim holds the last command), resets
   through the channel, then waits until the robot is at rest (STILL_SAMPLES consecutive still samples stamped
   RESET_MARGIN_S or more after the reset, within `still_timeout_s` wall seconds);
 - makes one graded call (`observe`): records the true motion from before the call, calls the service on a daemon
@@ -52,6 +54,7 @@ import os
 import re
 import threading
 import time
+import xmlrpc.client
 from typing import Dict, Sequence
 
 import actionlib
@@ -63,7 +66,7 @@ import rosservice
 from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import Twist
 
-from lab_grader.checks import image_folder, interference
+from lab_grader.checks import command_links, image_folder, interference
 from lab_grader.checks.action_checks import ActionObservation
 from lab_grader.checks.ground_truth import TruthClient
 from lab_grader.checks.motion import Observation, is_still
@@ -76,6 +79,7 @@ CMD_VEL_TOPIC = "/cmd_vel"
 FIRST_SAMPLE_WALL_S = 30.0     # wait this long for the first ground-truth sample before giving up
 CLOCK_STALL_WALL_S = 10.0      # sim time frozen this long during a sim-time wait: the simulator is gone
 CMD_VEL_CONNECT_WALL_S = 5.0   # wait this long for the simulator to connect to our /cmd_vel publisher
+COMMANDS_HEARD_WALL_S = 5.0    # ... and before a check, this long for it to connect to every /cmd_vel publisher
 STILL_SAMPLES = 3              # consecutive still samples (0.1 s at 30 Hz) after a reset = at rest
 RESET_MARGIN_S = 0.1           # only samples stamped this much sim time after the reset count as "after it"
 INTERFERENCE_POLL_WALL_S = 0.2  # the master's publishers are looked at this often during a check
@@ -481,6 +485,7 @@ class GradingContext:
         self._check_running()
         if not self.robot:
             return
+        self._wait_commands_heard()
         self._window = self._truth.mark()
         self._watch.restart()
         self.stop_robot()
@@ -505,6 +510,26 @@ class GradingContext:
                                  "w={:.3f} rad/s): is a node still driving it?".format(
                                      still_timeout_s, round(latest.v, 3) + 0.0, round(latest.w, 3) + 0.0))
             self._truth.wait(WAIT_SLICE_WALL_S)
+
+    def _wait_commands_heard(self):
+        """Wait (wall, at most COMMANDS_HEARD_WALL_S) until the simulator is connected to every node that publishes
+        /cmd_vel on the master (lab_grader.checks.command_links). The simulator is asked at the XML-RPC URI its
+        private channel gave; a publisher it is still not connected to by then, or a master or simulator that does
+        not answer, is left to the check."""
+        master = rosgraph.Master(rospy.get_name())
+        simulator = xmlrpc.client.ServerProxy(self._truth.identity["uri"])
+        deadline = time.monotonic() + COMMANDS_HEARD_WALL_S
+        while True:
+            try:
+                publishers = dict(master.getSystemState()[0]).get(CMD_VEL_TOPIC, [])
+                uris = {master.lookupNode(node) for node in publishers}
+                bus_info = simulator.getBusInfo(rospy.get_name())[2]
+            except (rosgraph.MasterError, OSError, xmlrpc.client.Error):
+                return
+            if not command_links.unheard(uris, bus_info, CMD_VEL_TOPIC) or time.monotonic() > deadline:
+                return
+            self._check_running()
+            time.sleep(WAIT_SLICE_WALL_S)
 
     # ---- one graded call ------------------------------------------------------------------------------------------
 
