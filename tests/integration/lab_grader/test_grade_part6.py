@@ -9,36 +9,22 @@ run (two at a time, the simulator at REAL_TIME_FACTOR), each a marker's verdict 
 Each grades both runs: the colour search in coloured_pillars, then the line follower on the line_following track
 in a simulator of its own. The reports render with a picture per world."""
 import json
-import os
-import subprocess
 
 import pytest
 
-from .sample_submissions import make_submission
+from .grading import GRADE_TIMEOUT_S, by_id, grade_class
 
-GRADE_TIMEOUT_S = 900
 pytestmark = pytest.mark.timeout(GRADE_TIMEOUT_S + 60)
 CLASS = ("part6_reference", "part6_course_template", "part6_careless")
-REAL_TIME_FACTOR = "2"   # 1920x1080 frames at 10 per sim second: the simulator and a node each take most of a core
+REAL_TIME_FACTOR = 2   # 1920x1080 frames at 10 per sim second: the simulator and a node each take most of a core
 COLOUR_CHECKS = ("colour_search_blue", "colour_search_every_pillar")
 LINE_CHECKS = ("line_progress", "line_mean_distance", "line_never_leaves")
 
 
 @pytest.fixture(scope="module")
-def graded(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("part6_class")
-    for name in CLASS:
-        make_submission(name, folder)
-    out = tmp_path_factory.mktemp("part6_grades")
-    run = subprocess.run(["rosrun", "lab_grader", "grade", str(folder), "--suite", "part6", "--out", str(out),
-                          "--jobs", "2", "--rtf", REAL_TIME_FACTOR], env=dict(os.environ), capture_output=True,
-                         text=True, timeout=GRADE_TIMEOUT_S)
-    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
-    return out, {path.parent.name: json.loads(path.read_text()) for path in out.glob("*/result.json")}
-
-
-def by_id(result):
-    return {check["id"]: check for check in result["checks"]}
+def graded(grader_env, tmp_path_factory):
+    graded_class = grade_class(grader_env, CLASS, tmp_path_factory.mktemp("part6"), "part6", rtf=REAL_TIME_FACTOR)
+    return graded_class.out, graded_class.results
 
 
 def all_pass(result):
