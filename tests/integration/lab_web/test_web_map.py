@@ -8,7 +8,6 @@ import asyncio
 import base64
 import json
 import math
-import time
 
 import aiohttp
 import cv2
@@ -21,6 +20,7 @@ from selenium.webdriver.support.ui import Select
 
 from lab_web import occupancy
 from roslab import wait_until
+from roslab.waiting import WaitTimeout
 
 from .conftest import open_page, start_web_server
 
@@ -118,12 +118,13 @@ def pixel(page, x, y):
 def pixel_once_drawn(page, x, y, expected, tolerance=0, timeout_s=5.0):
     """pixel(page, x, y) once it is within `tolerance` of `expected`, or what it is after `timeout_s`: the page paints
     a new state at its next animation frame, which a busy machine delays after the state itself has arrived."""
-    deadline = time.monotonic() + timeout_s
-    while True:
+    def drawn():
         rgb = pixel(page, x, y)
-        if close_to(rgb, expected, tolerance) or time.monotonic() > deadline:
-            return rgb
-        time.sleep(0.1)
+        return rgb if close_to(rgb, expected, tolerance) else None
+    try:
+        return wait_until(drawn, timeout_s, "the page to paint", interval_s=0.1)
+    except WaitTimeout:
+        return pixel(page, x, y)
 
 
 def cell_centre(column, row):

@@ -553,6 +553,11 @@ def _items(convert, value, where):
     return [("{}[{}]".format(where, index), item) for index, item in enumerate(value)]
 
 
+def _file_name(convert, value, where):
+    """A node's file name, as services and runs name the student's script."""
+    return convert.text(value, where, FILE_NAME, "a file name (no folders)")
+
+
 def _services(convert, value, where, what) -> Tuple[ServiceSpec, ...]:
     result: List[ServiceSpec] = []
     for item_where, item in _items(convert, value, where):
@@ -560,8 +565,7 @@ def _services(convert, value, where, what) -> Tuple[ServiceSpec, ...]:
         name = entry.get("name", lambda v, w: convert.text(v, w, SERVICE_NAME, "an absolute ROS name (/a/b)"),
                          required=True)
         srv_type = entry.get("type", lambda v, w: convert.text(v, w, TYPE_NAME, what), required=True)
-        node = entry.get("node", lambda v, w: convert.text(v, w, FILE_NAME, "a file name (no folders)"),
-                         required=True)
+        node = entry.get("node", lambda v, w: _file_name(convert, v, w), required=True)
         wait_s = entry.get("wait_s", convert.non_negative, default=DEFAULT_WAIT_S)
         if any(service.name == name for service in result):
             convert.fail(entry.where("name"), "{} is listed twice".format(name))
@@ -573,8 +577,7 @@ def _runs(convert, value, where, world) -> Tuple[RunSpec, ...]:
     result: List[RunSpec] = []
     for item_where, item in _items(convert, value, where):
         entry = _Mapping(convert.file_label, item_where, item, RUN_KEYS)
-        node = entry.get("node", lambda v, w: convert.text(v, w, FILE_NAME, "a file name (no folders)"),
-                         required=True)
+        node = entry.get("node", lambda v, w: _file_name(convert, v, w), required=True)
         if any(run.node == node for run in result):
             convert.fail(entry.where("node"), "{} is listed twice".format(node))
         duration_s = entry.get("duration_s", convert.positive, required=True)
