@@ -130,8 +130,16 @@ class LayeredCostmap:
         self._touched(cell_box.of_cells(rows[inside], cols[inside]))
 
     def clear_footprint(self, x, y, yaw):
-        """Free the obstacle layer's cells whose centres lie inside the footprint at (x, y, yaw)."""
-        cols, rows = self.cells_inside(self.params.footprint.placed(x, y, yaw))
+        """Free the obstacle layer's cells under the footprint at (x, y, yaw): those whose centres lie inside it
+        and those its outline passes through (costmap_2d fills the polygon's rasterised outline and interior).
+        Without the outline's cells a laser mark on a cell the outline crosses, but whose centre lies just
+        outside, stayed lethal under a robot touching an obstacle, so every trajectory from there collided and
+        the robot stood pressed against a pillar through every later goal."""
+        polygon = self.params.footprint.placed(x, y, yaw)
+        inside_cols, inside_rows = self.cells_inside(polygon)
+        outline = [cells_along(self.geometry, a, b[None]) for a, b in zip(polygon, np.roll(polygon, -1, axis=0))]
+        cols = np.concatenate([inside_cols] + [c for c, _ in outline])
+        rows = np.concatenate([inside_rows] + [r for _, r in outline])
         self._obstacles[rows, cols] = FREE
         self._touched(cell_box.of_cells(rows, cols))
 
