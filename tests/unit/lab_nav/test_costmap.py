@@ -103,6 +103,25 @@ def test_reset_and_footprint_clearing_erase_marks_but_not_the_map():
     assert costmap.update()[40, 30] != LETHAL and costmap.costs[40, 60] == LETHAL
 
 
+def test_footprint_clearing_frees_the_cells_its_outline_crosses():
+    """A laser mark on a cell the footprint's outline crosses (its centre just outside the polygon), as on a robot
+    touching a pillar, is freed: the outline a local planner checks at the robot's own pose then meets no mark."""
+    geometry = MapGeometry(0.05, 80, 80, -2.0, -2.0)
+    costmap = LayeredCostmap(geometry, PARAMS, static=False)
+    side = PARAMS.footprint.array[:, 1].max()   # the left edge, 0.165 m
+    mark = (0.0, side + 0.005)                   # in the cell the edge crosses, whose centre lies outside
+    col, row = (int(v) for v in geometry.world_to_cell(*mark))
+    assert geometry.cell_center(col, row)[1] - geometry.resolution / 2 < side < geometry.cell_center(col, row)[1]
+    costmap.add_scan((0.0, 0.0), [mark], [True], clear=False)
+    assert costmap.update()[row, col] == LETHAL
+    costmap.clear_footprint(0.0, 0.0, 0.0)
+    costs = costmap.update()
+    assert costs[row, col] != LETHAL
+    outline = PARAMS.footprint.outline(0.01)
+    cols, rows = geometry.world_to_cell(outline[:, 0], outline[:, 1])
+    assert costs[rows, cols].max() < LETHAL
+
+
 def test_changed_box_bounds_the_differences():
     a = np.zeros((10, 10), np.uint8)
     b = a.copy()

@@ -28,6 +28,11 @@ from .inflation import Inflation
 from .raytrace import cells_along
 from .values import FREE, LETHAL, NO_INFORMATION, from_map
 
+OUTLINE_SAMPLES_PER_CELL = 2
+"""Points per cell length along the footprint's outline when clearing under it: every half cell visits the cells
+its rasterised edges cross, in one numpy pass (a ray trace per edge took 1.8 ms a call, 18 % of move_base's busy
+samples at factor 10; this about 0.4 ms, the centres-only clearing 0.34 ms)."""
+
 STATIC_LAYER = "static_layer"
 OBSTACLE_LAYER = "obstacle_layer"
 INFLATION_LAYER = "inflation_layer"
@@ -130,8 +135,19 @@ class LayeredCostmap:
         self._touched(cell_box.of_cells(rows[inside], cols[inside]))
 
     def clear_footprint(self, x, y, yaw):
-        """Free the obstacle layer's cells whose centres lie inside the footprint at (x, y, yaw)."""
-        cols, rows = self.cells_inside(self.params.footprint.placed(x, y, yaw))
+        """Free the obstacle layer's cells under the footprint at (x, y, yaw): those whose centres lie inside it
+        and those its outline passes through (costmap_2d fills the polygon's rasterised outline and interior).
+        Without the outline's cells a laser mark on a cell the outline crosses, but whose centre lies just
+        outside, stayed lethal under a robot touching an obstacle, so every trajectory from there collided and
+        the robot stood pressed against a pillar through every later goal."""
+        inside_cols, inside_rows = self.cells_inside(self.params.footprint.placed(x, y, yaw))
+        points = self.params.footprint.outline(self.geometry.resolution / OUTLINE_SAMPLES_PER_CELL)
+        c, s = np.cos(yaw), np.sin(yaw)
+        outline_cols, outline_rows = self.geometry.world_to_cell(x + c * points[:, 0] - s * points[:, 1],
+                                                                 y + s * points[:, 0] + c * points[:, 1])
+        on_grid = self.geometry.contains(outline_cols, outline_rows)
+        cols = np.concatenate((inside_cols, outline_cols[on_grid]))
+        rows = np.concatenate((inside_rows, outline_rows[on_grid]))
         self._obstacles[rows, cols] = FREE
         self._touched(cell_box.of_cells(rows, cols))
 
