@@ -7,8 +7,8 @@
  * Each item is drawn in its own frame: the fixed frame as it is, the picked robot's odom through map -> odom; others
  * not at all.
  */
-import {addMessage, app, decodeFloat32, decodePng, isNumber, labView, requestRender} from '../core.js';
-import {addLayer, currentView, drawGridImage, strokeLine, tracePath, worldToPixel} from '../view.js';
+import {addMessage, app, decodeFloat32, decodePng, isNumber, labView} from '../core.js';
+import {addLayer, currentView, drawGridImage, redraw, strokeLine, tracePath, worldToPixel} from '../view.js';
 
 const COSTMAP_ALPHA = 0.7;
 const COLORS = {global: '#00b000', local: '#e0c000', particle: 'rgb(255, 25, 0)', amcl: '#4060ff',
@@ -25,7 +25,7 @@ function onCostmap(frame) {
   decodePng(`${frame.name} costmap`, frame.png, (image) => {
     costmaps[frame.name] = {image, frame};
     labView.costmaps += 1;
-    requestRender('world');
+    redraw('grids');
   });
 }
 
@@ -47,7 +47,7 @@ function onNav(frame) {
     else addMessage('particle cloud: its poses do not add up to its count');
   }
   labView.nav = nav;
-  requestRender('world');
+  redraw('vectors');
 }
 
 function fixedFrame() {
@@ -103,11 +103,15 @@ function drawAmcl(ctx, amcl) {
   arrow(ctx, [x, y, yaw], 0.4 * scale, COLORS.amcl, 3);
 }
 
-function drawLayer(ctx, layerFrame) {
+function drawCostmaps(ctx, layerFrame) {
   for (const name of ['global', 'local']) {
     const costmap = costmaps[name];
     if (costmap && inLayer(costmap.frame.frame, layerFrame)) drawGridImage(ctx, costmap.image, costmap.frame, COSTMAP_ALPHA);
   }
+}
+
+/** The plans, particles, amcl's pose, the goal and the frontiers: above both costmaps. */
+function drawVectors(ctx, layerFrame) {
   if (!nav) return;
   for (const name of ['global', 'local']) {
     const plan = (nav.plans || {})[name];
@@ -151,14 +155,17 @@ function drawMarker(ctx, marker, scale) {
 function setup() {
   labView.costmaps = 0;
   labView.covarianceEllipse = covarianceEllipse;
-  addLayer(16, (ctx) => drawLayer(ctx, 'fixed'), 'fixed');
-  addLayer(17, (ctx) => drawLayer(ctx, 'odom'), 'odom');
+  addLayer(16, (ctx) => drawCostmaps(ctx, 'fixed'), 'fixed');    // with the map: they change as often
+  addLayer(17, (ctx) => drawCostmaps(ctx, 'odom'), 'odom');
+  addLayer(18, (ctx) => drawVectors(ctx, 'fixed'), 'fixed');
+  addLayer(19, (ctx) => drawVectors(ctx, 'odom'), 'odom');
 }
 
 function onHello() {
   nav = null;
   labView.nav = null;
   for (const name of Object.keys(costmaps)) delete costmaps[name];
+  redraw();
 }
 
 export default {name: 'nav', setup, onHello, frames: {costmap: onCostmap, nav: onNav}};

@@ -2,8 +2,8 @@
  * The robot panel: the driven robot from `state` frames (its pose from /odom, its trail, the newest LiDAR sweep)
  * on the world canvas, and the sim time, real-time factor and state rate in the top bar.
  */
-import {$, app, decodeFloat32, isNumber, labView, recordLatency, requestRender, setText, updatePanels, validRobot} from '../core.js';
-import {COLORS, ROBOT_RADIUS_M, addLayer, currentView, strokeLine, tracePath, updateView, worldToPixel}
+import {$, app, decodeFloat32, isNumber, labView, recordLatency, setText, updatePanels, validRobot} from '../core.js';
+import {COLORS, ROBOT_RADIUS_M, addLayer, currentView, redraw, strokeLine, tracePath, updateView, worldToPixel}
   from '../view.js';
 
 const TRAIL_MAX_POINTS = 3000;
@@ -44,7 +44,7 @@ function onState(frame) {
   setText($('sim-time'), isNumber(frame.sim_time) ? frame.sim_time.toFixed(1) : '—');
   setText($('rtf'), isNumber(frame.rtf) ? `${frame.rtf.toFixed(2)}x` : '—');
   updateView();
-  requestRender('world');
+  redraw('live');
 }
 
 /** Frames per second of state frames, counted over the last second. */
