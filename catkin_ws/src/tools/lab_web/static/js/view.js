@@ -22,12 +22,14 @@ export const canvas = $('world');
 /* The view is a stack of planes, each a canvas of its own (the compositor lays them over each other), each redrawn
    only when what it shows changed or the view moved. With one canvas redrawn whole for every state frame (25 a
    second), headless Chromium rasterised the map, both costmaps and amcl's 3000 arrows each time, on the page's main
-   thread: it redrew about 4 times a second, and state frames waited behind it. Layers join a plane by their z. */
+   thread: it redrew about 4 times a second, and state frames waited behind it. Layers join a plane by their z.
+   A plane with no odom-frame layer is not redrawn when odom moves in the fixed frame (amcl's corrections). */
 const PLANES = [
   {name: 'grids', belowZ: 18},        // floor, 1 m grid, scene, map, costmaps: a new grid a few times a second
-  {name: 'vectors', belowZ: 20},      // plans, particles, amcl pose, goal, frontiers: nav frames, <= 5 a second
+  {name: 'particles', belowZ: 19},    // amcl's cloud in the fixed frame: thousands of arrows, when amcl updates
+  {name: 'vectors', belowZ: 20},      // plans, amcl pose, goal, frontiers: nav frames, <= 5 a second
   {name: 'live', belowZ: Infinity},   // models, robots, trail, scan, robot, tools: every state frame
-].map((plane) => Object.assign(plane, {layers: [], dirty: true}));
+].map((plane) => Object.assign(plane, {layers: [], dirty: true, placement: null}));
 const LIVE = PLANES[PLANES.length - 1];
 // #world is the live plane: on top, it takes the mouse; the planes below it are drawn on canvases put under it.
 // willReadFrequently: tests read pixels back with getImageData; without it Chromium warns in the console.
@@ -40,8 +42,6 @@ for (const plane of PLANES.slice(0, -1)) {
   canvas.before(below);
   plane.context = below.getContext('2d');
 }
-let drawnPlacement = null;       // the view and odom's pose the planes were drawn with
-
 /** `draw(ctx)` paints one layer of the world view, lower z first (the grid is below 0), with coordinates in
  *  `frame`: 'odom' (the default) or 'fixed' (already in the fixed frame, as the map). Its panel calls
  *  redraw(planeOf(z)) when what it draws changes. */
@@ -55,8 +55,8 @@ function planeOf(z) {
   return PLANES.find((plane) => z < plane.belowZ);
 }
 
-/** Redraws the plane named `name` ('grids', 'vectors' or 'live') at the next animation frame; every plane when
- *  no name is given (what decides which layer draws what changed, as the fixed frame). */
+/** Redraws the plane named `name` ('grids', 'particles', 'vectors' or 'live') at the next animation frame; every
+ *  plane when no name is given (what decides which layer draws what changed, as the fixed frame). */
 export function redraw(name) {
   for (const plane of PLANES) {
     if (name === undefined || plane.name === name) plane.dirty = true;
@@ -186,13 +186,15 @@ export function canvasPoint(event) {
 
 /** Redraws the planes that changed; all of them when the view, the fixed frame or odom's place in it moved. */
 function drawWorld() {
-  const placement = JSON.stringify([currentView(), app.fixed]);
-  if (placement !== drawnPlacement) {
-    drawnPlacement = placement;
-    for (const plane of PLANES) plane.dirty = true;
-  }
+  const fixed = app.fixed || {};
   const odom = odomCanvasTransform();
   for (const plane of PLANES) {
+    const movesWithOdom = plane.layers.some((layer) => layer.frame === 'odom');
+    const placement = JSON.stringify([currentView(), movesWithOdom ? fixed : [fixed.frame, fixed.odom_frame]]);
+    if (placement !== plane.placement) {
+      plane.placement = placement;
+      plane.dirty = true;
+    }
     if (!plane.dirty) continue;
     plane.dirty = false;
     const ctx = plane.context;

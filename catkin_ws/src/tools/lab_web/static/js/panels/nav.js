@@ -47,7 +47,8 @@ function onNav(frame) {
     else addMessage('particle cloud: its poses do not add up to its count');
   }
   labView.nav = nav;
-  redraw('vectors');
+  if (particles) redraw('particles');
+  redraw('vectors');      // cheap without the particles (and it draws them where they are in odom)
 }
 
 function fixedFrame() {
@@ -110,7 +111,15 @@ function drawCostmaps(ctx, layerFrame) {
   }
 }
 
-/** The plans, particles, amcl's pose, the goal and the frontiers: above both costmaps. */
+/** amcl's cloud, an arrow per particle. */
+function drawParticles(ctx, layerFrame) {
+  if (!nav || !nav.particles || !inLayer(nav.particles.frame, layerFrame)) return;
+  const poses = nav.particles.poses;
+  const lengthPx = PARTICLE_LENGTH_M * currentView().scale;
+  for (let i = 0; i + 2 < poses.length; i += 3) arrow(ctx, [poses[i], poses[i + 1], poses[i + 2]], lengthPx, COLORS.particle, 2);
+}
+
+/** The plans, amcl's pose, the goal and the frontiers: above both costmaps and the particles. */
 function drawVectors(ctx, layerFrame) {
   if (!nav) return;
   for (const name of ['global', 'local']) {
@@ -123,12 +132,6 @@ function drawVectors(ctx, layerFrame) {
     ctx.stroke();
   }
   const scale = currentView().scale;
-  if (nav.particles && inLayer(nav.particles.frame, layerFrame)) {
-    const poses = nav.particles.poses;
-    for (let i = 0; i + 2 < poses.length; i += 3) {
-      arrow(ctx, [poses[i], poses[i + 1], poses[i + 2]], PARTICLE_LENGTH_M * scale, COLORS.particle, 2);
-    }
-  }
   if (nav.amcl && inLayer(nav.amcl.frame, layerFrame) && nav.amcl.covariance.every(isNumber)) drawAmcl(ctx, nav.amcl);
   if (nav.goal && inLayer(nav.goal.frame, layerFrame)) arrow(ctx, nav.goal.pose, 0.5 * scale, COLORS.goal, 4);
   for (const marker of nav.frontiers || []) {
@@ -157,8 +160,12 @@ function setup() {
   labView.covarianceEllipse = covarianceEllipse;
   addLayer(16, (ctx) => drawCostmaps(ctx, 'fixed'), 'fixed');    // with the map: they change as often
   addLayer(17, (ctx) => drawCostmaps(ctx, 'odom'), 'odom');
-  addLayer(18, (ctx) => drawVectors(ctx, 'fixed'), 'fixed');
-  addLayer(19, (ctx) => drawVectors(ctx, 'odom'), 'odom');
+  addLayer(18, (ctx) => drawParticles(ctx, 'fixed'), 'fixed');   // a plane of their own: amcl moves odom often
+  addLayer(19, (ctx) => drawVectors(ctx, 'fixed'), 'fixed');
+  addLayer(19.5, (ctx) => {
+    drawParticles(ctx, 'odom');
+    drawVectors(ctx, 'odom');
+  }, 'odom');
 }
 
 function onHello() {
