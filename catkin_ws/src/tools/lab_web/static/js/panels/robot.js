@@ -15,22 +15,19 @@ function updateTrail(update) {
   if (app.trail.length > TRAIL_MAX_POINTS) app.trail = app.trail.slice(app.trail.length - TRAIL_MAX_POINTS);
 }
 
-let scanText = null;            // the newest sweep as sent, and as [[x, y], ...]
-let scanPoints = [];
+let scanPoints = [];            // the newest sweep's hits as [[x, y], ...]: a state frame brings a sweep only once
 
-/** The sweep's hits as [[x, y], ...], decoded once per sweep (state frames repeat it until the next one). */
+/** The sweep's hits as [[x, y], ...]. */
 function scanHits(base64) {
-  if (base64 !== scanText) {
-    const values = decodeFloat32(base64) || [];
-    scanPoints = [];
-    for (let i = 0; i + 1 < values.length; i += 2) scanPoints.push([values[i], values[i + 1]]);
-    scanText = base64;
-  }
-  return scanPoints;
+  const values = decodeFloat32(base64) || [];
+  const points = [];
+  for (let i = 0; i + 1 < values.length; i += 2) points.push([values[i], values[i + 1]]);
+  return points;
 }
 
 function onState(frame) {
-  frame.scan = scanHits(frame.scan);
+  if (typeof frame.scan === 'string') scanPoints = scanHits(frame.scan);
+  frame.scan = scanPoints;
   app.state = frame;
   updateTrail(frame.trail);
   labView.frames += 1;
@@ -97,6 +94,7 @@ function setup() {
 function onHello() {
   app.state = null;
   app.trail = [];
+  scanPoints = [];
   app.robotSeen = false;
   labView.robot = null;
 }
