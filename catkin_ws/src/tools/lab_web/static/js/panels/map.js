@@ -11,7 +11,7 @@ function onFixed(frame) {
   app.fixed = frame;
   labView.fixedFrame = frame.frame;
   updateView();
-  redraw();        // another fixed frame decides which layers draw what
+  redraw('live');   // the planes that move with odom, or draw in another frame now, are redrawn with it
 }
 
 /** Decodes each map PNG once; redraws use the decoded image. */
