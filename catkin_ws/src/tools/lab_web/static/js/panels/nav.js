@@ -8,7 +8,7 @@
  * not at all.
  */
 import {addMessage, app, decodeFloat32, decodePng, isNumber, labView} from '../core.js';
-import {addLayer, currentView, drawGridImage, redraw, strokeLine, tracePath, worldToPixel} from '../view.js';
+import {addLayer, currentView, drawGridImage, redraw, tracePath, worldToPixel} from '../view.js';
 
 const COSTMAP_ALPHA = 0.7;
 const COLORS = {global: '#00b000', local: '#e0c000', particle: 'rgb(255, 25, 0)', amcl: '#4060ff',
@@ -66,17 +66,23 @@ function inLayer(frame, layerFrame) {
   return frame === odomFrame() && layerFrame === 'odom';
 }
 
+/** An arrow as one path (shaft and both sides of its head) stroked once: a third of the strokes of three lines. */
 function arrow(ctx, pose, lengthPx, color, width) {
   const [x, y, yaw] = pose;
   const [ax, ay] = worldToPixel(x, y);
   const [bx, by] = [ax + lengthPx * Math.cos(yaw), ay - lengthPx * Math.sin(yaw)];
-  ctx.lineWidth = width;
-  strokeLine(ctx, ax, ay, bx, by, color);
   const head = Math.max(lengthPx * 0.3, 3);
+  ctx.lineWidth = width;
+  ctx.strokeStyle = color;
+  ctx.beginPath();
+  ctx.moveTo(ax, ay);
+  ctx.lineTo(bx, by);
   for (const side of [-1, 1]) {
     const back = yaw + Math.PI - side * 0.5;
-    strokeLine(ctx, bx, by, bx + head * Math.cos(back), by - head * Math.sin(back), color);
+    ctx.moveTo(bx, by);
+    ctx.lineTo(bx + head * Math.cos(back), by - head * Math.sin(back));
   }
+  ctx.stroke();
 }
 
 /** One standard deviation of the position: the ellipse's axes are the square roots of the covariance's
