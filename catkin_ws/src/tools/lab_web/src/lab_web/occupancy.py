@@ -43,6 +43,10 @@ def _costmap_palette():
 
 
 PALETTES = {"map": _map_palette(), "costmap": _costmap_palette()}
+_BGRA_WORDS = {scheme: np.ascontiguousarray(palette[:, [2, 1, 0, 3]]).view(np.uint32).ravel()
+               for scheme, palette in PALETTES.items()}
+"""Each palette as OpenCV's BGRA, a pixel per 32-bit word: one np.take per grid, where indexing the (256, 4) table
+gathered byte by byte (28 ms against 2 ms for a 384 x 384 costmap) and a colour conversion followed."""
 
 
 def grid_png(data, width, height, scheme="map"):
@@ -55,8 +59,8 @@ def grid_png(data, width, height, scheme="map"):
         np.asarray(data, dtype=np.int8).view(np.uint8)
     if cells.size != width * height:
         raise ValueError("the map has {} cells, its info says {} x {}".format(cells.size, width, height))
-    rgba = PALETTES[scheme][cells.reshape(height, width)]
-    ok, encoded = cv2.imencode(".png", cv2.cvtColor(rgba, cv2.COLOR_RGBA2BGRA), [cv2.IMWRITE_PNG_COMPRESSION, 1])
+    bgra = np.take(_BGRA_WORDS[scheme], cells).view(np.uint8).reshape(height, width, 4)
+    ok, encoded = cv2.imencode(".png", bgra, [cv2.IMWRITE_PNG_COMPRESSION, 1])
     if not ok:
         raise ValueError("the map could not be encoded")
     return base64.b64encode(encoded.tobytes()).decode()

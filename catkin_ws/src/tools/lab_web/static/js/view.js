@@ -1,13 +1,13 @@
 /*
  * view.js: the top-down canvas (#world) the world, robot and map panels draw on: its view transform (metres in
- * the fixed frame <-> canvas pixels, y up) and its layers, drawn in order of z on each redraw.
+ * the fixed frame <-> canvas pixels, y up) and its layers, drawn in order of z on planes redrawn when they change.
  *
  * The fixed frame is "map" once a map has come, else "odom" (the map panel's `fixed` frames). What the robot
  * and world panels send is in odom (tb3_sim's world frame is odom's origin): their layers are drawn through
  * odom's pose in the fixed frame, applied as a canvas transform, so the robot goes map -> odom -> base_footprint
  * as in RViz and their drawing code knows nothing of it.
  */
-import {$, addRenderer, app, isNumber, labView, validRobot} from './core.js';
+import {$, addRenderer, app, isNumber, labView, requestRender, validRobot} from './core.js';
 
 const VIEW_MARGIN_PX = 16;
 export const ROBOT_RADIUS_M = 0.15;
@@ -18,15 +18,50 @@ export const COLORS = {
 };
 
 export const canvas = $('world');
-// willReadFrequently: tests read pixels back with getImageData; without it Chromium warns in the console.
-const ctx = canvas.getContext('2d', {willReadFrequently: true});
-const layers = [];               // {z, draw(ctx), frame}, sorted by z
 
-/** `draw(ctx)` paints one layer of the world canvas, lower z first (the grid is below 0), with coordinates in
- *  `frame`: 'odom' (the default) or 'fixed' (already in the fixed frame, as the map). */
+/* The view is a stack of planes, each a canvas of its own (the compositor lays them over each other), each redrawn
+   only when what it shows changed or the view moved. With one canvas redrawn whole for every state frame (25 a
+   second), headless Chromium rasterised the map, both costmaps and amcl's 3000 arrows each time, on the page's main
+   thread: it redrew about 4 times a second, and state frames waited behind it. Layers join a plane by their z.
+   A plane with no odom-frame layer is not redrawn when odom moves in the fixed frame (amcl's corrections). */
+const PLANES = [
+  {name: 'grids', belowZ: 18},        // floor, 1 m grid, scene, map, costmaps: a new grid a few times a second
+  {name: 'particles', belowZ: 19},    // amcl's cloud in the fixed frame: thousands of arrows, when amcl updates
+  {name: 'vectors', belowZ: 20},      // plans, amcl pose, goal, frontiers: nav frames, <= 5 a second
+  {name: 'live', belowZ: Infinity},   // models, robots, trail, scan, robot, tools: every state frame
+].map((plane) => Object.assign(plane, {layers: [], dirty: true, placement: null}));
+const LIVE = PLANES[PLANES.length - 1];
+// #world is the live plane: on top, it takes the mouse; the planes below it are drawn on canvases put under it.
+// willReadFrequently: tests read pixels back with getImageData; without it Chromium warns in the console.
+LIVE.context = canvas.getContext('2d', {willReadFrequently: true});
+for (const plane of PLANES.slice(0, -1)) {
+  const below = document.createElement('canvas');
+  below.className = 'plane';
+  below.width = canvas.width;
+  below.height = canvas.height;
+  canvas.before(below);
+  plane.context = below.getContext('2d');
+}
+/** `draw(ctx)` paints one layer of the world view, lower z first (the grid is below 0), with coordinates in
+ *  `frame`: 'odom' (the default) or 'fixed' (already in the fixed frame, as the map). Its panel calls
+ *  redraw(planeOf(z)) when what it draws changes. */
 export function addLayer(z, draw, frame = 'odom') {
-  layers.push({z, draw, frame});
-  layers.sort((a, b) => a.z - b.z);
+  const plane = planeOf(z);
+  plane.layers.push({z, draw, frame});
+  plane.layers.sort((a, b) => a.z - b.z);
+}
+
+function planeOf(z) {
+  return PLANES.find((plane) => z < plane.belowZ);
+}
+
+/** Redraws the plane named `name` ('grids', 'particles', 'vectors' or 'live') at the next animation frame; every
+ *  plane when no name is given (what decides which layer draws what changed, as the fixed frame). */
+export function redraw(name) {
+  for (const plane of PLANES) {
+    if (name === undefined || plane.name === name) plane.dirty = true;
+  }
+  requestRender('world');
 }
 
 /** [x, y, yaw] of odom in the fixed frame (zeros while the fixed frame is odom). */
@@ -149,23 +184,40 @@ export function canvasPoint(event) {
   return [event.clientX - rect.left, event.clientY - rect.top];
 }
 
+/** Redraws the planes that changed; all of them when the view, the fixed frame or odom's place in it moved. */
 function drawWorld() {
-  ctx.setTransform(1, 0, 0, 1, 0, 0);
-  ctx.globalAlpha = 1;
-  ctx.fillStyle = COLORS.floor;
-  ctx.fillRect(0, 0, canvas.width, canvas.height);
-  drawGrid();
+  const fixed = app.fixed || {};
   const odom = odomCanvasTransform();
-  for (const layer of layers) {
-    ctx.save();
-    if (layer.frame === 'odom') ctx.setTransform(...odom);
-    layer.draw(ctx);
-    ctx.restore();
+  for (const plane of PLANES) {
+    const movesWithOdom = plane.layers.some((layer) => layer.frame === 'odom');
+    const placement = JSON.stringify([currentView(), movesWithOdom ? fixed : [fixed.frame, fixed.odom_frame]]);
+    if (placement !== plane.placement) {
+      plane.placement = placement;
+      plane.dirty = true;
+    }
+    if (!plane.dirty) continue;
+    plane.dirty = false;
+    const ctx = plane.context;
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.globalAlpha = 1;
+    if (plane === PLANES[0]) {
+      ctx.fillStyle = COLORS.floor;
+      ctx.fillRect(0, 0, canvas.width, canvas.height);
+      drawGrid(ctx);
+    } else {
+      ctx.clearRect(0, 0, canvas.width, canvas.height);
+    }
+    for (const layer of plane.layers) {
+      ctx.save();
+      if (layer.frame === 'odom') ctx.setTransform(...odom);
+      layer.draw(ctx);
+      ctx.restore();
+    }
   }
 }
 
 /** A faint 1 m grid, with the x and y axes a little darker; skipped when lines would crowd. */
-function drawGrid() {
+function drawGrid(ctx) {
   const scale = currentView().scale;
   if (scale < 6) return;
   const [x0, y1] = pixelToWorld(0, 0);

@@ -89,18 +89,30 @@ class Costmap:
 
     def replace(self, grid):
         """A whole grid (a copy: the updates write into it); cells that do not add up to its size stay flat, and
-        its picture is an error naming them."""
-        self.info, self.frame = grid.info, _frame(grid.header)
-        self.cells = np.array(grid.data, dtype=np.int8)
-        if self.cells.size == grid.info.width * grid.info.height:
-            self.cells = self.cells.reshape(grid.info.height, grid.info.width)
+        its picture is an error naming them. Whether its picture changed: move_base sends a costmap whole at its
+        publish_frequency, the same grid again while the robot stands still."""
+        cells = np.array(grid.data, dtype=np.int8)
+        if cells.size == grid.info.width * grid.info.height:
+            cells = cells.reshape(grid.info.height, grid.info.width)
+        old = self.info
+        changed = old is None or self.frame != _frame(grid.header) or (old.width, old.height, old.resolution) != (
+            grid.info.width, grid.info.height, grid.info.resolution) or old.origin != grid.info.origin \
+            or not np.array_equal(self.cells, cells)
+        self.info, self.frame, self.cells = grid.info, _frame(grid.header), cells
+        return changed
 
     def patch(self, update):
+        """Writes a costmap_updates patch into the cells; whether that changed a cell (move_base's global costmap
+        sends the patch of its sensors' reach at every update, mostly the same cells). A patch that does not fit the
+        grid is ignored."""
         if self.cells is None or self.cells.ndim != 2 or update.x + update.width > self.cells.shape[1] \
                 or update.y + update.height > self.cells.shape[0] or len(update.data) != update.width * update.height:
             return False
-        self.cells[update.y:update.y + update.height, update.x:update.x + update.width] = \
-            np.asarray(update.data, dtype=np.int8).reshape(update.height, update.width)
+        region = self.cells[update.y:update.y + update.height, update.x:update.x + update.width]
+        cells = np.asarray(update.data, dtype=np.int8).reshape(update.height, update.width)
+        if np.array_equal(region, cells):
+            return False
+        region[:] = cells
         return True
 
     def content(self):
@@ -190,8 +202,8 @@ class NavPanel(Panel):
         with self._lock:
             costmap = self._costmaps[name]
             first = costmap.info is None
-            costmap.replace(grid)
-            self._publish_costmap(name, force=first)
+            if costmap.replace(grid):
+                self._publish_costmap(name, force=first)
 
     def _on_costmap_update(self, update, name):
         with self._lock:

@@ -23,7 +23,8 @@ class RobotPanel(Panel):
                  '"robot": {"x", "y", "yaw", "v", "w"} | null, "trail": {"reset": bool, "points": [[x, y], ...]} '
                  '(reset true: replace the page\'s trail with points; false: append them; a page keeps at most '
                  '3000 points), "scan": base64 of little-endian float32 x, y per world-frame LiDAR hit of the newest '
-                 'sweep}  <= 25 per second',
+                 'sweep, only in the page\'s first state frame since that sweep came (the page keeps the last one)}  '
+                 '<= 25 per second',
     }
 
     def __init__(self, ros):
@@ -32,7 +33,8 @@ class RobotPanel(Panel):
         self.state = Versioned()
         self.trail = scene.Trail()
         self._odom = None
-        self._scan_points = ""    # packed.points_base64 of the newest sweep's hits
+        self.scan = Versioned("")   # packed.points_base64 of the newest sweep's hits, sent once per sweep: state
+        #                             frames come at 25 a second, sweeps at 5 (2.9 kB of the 3.6 kB of a frame)
         self._clock_samples = []
         self._static_transforms = {}
         self._tf_static = rospy.Subscriber("/tf_static", TFMessage, self._on_tf_static, queue_size=10)
@@ -61,7 +63,7 @@ class RobotPanel(Panel):
         self._subscribe()
         with self._lock:
             self._odom = None
-            self._scan_points = ""
+            self.scan.set("")
             self.trail.clear()
         self._publish_state()
 
@@ -71,7 +73,11 @@ class RobotPanel(Panel):
             return []
         with self._lock:
             reset, points, session.trail_cursor = self.trail.since(session.trail_cursor)
-        return [("state", dict(state, trail={"reset": reset, "points": points}))]
+            scan = session.lacks("scan", self.scan)
+        content = dict(state, trail={"reset": reset, "points": points})
+        if scan is not None:
+            content["scan"] = scan
+        return [("state", content)]
 
     def robot_pose(self):
         """The robot's Pose2D in the odom frame, or None before its first odometry."""
@@ -103,7 +109,7 @@ class RobotPanel(Panel):
         with self._lock:
             if topic != self._scan_topic:
                 return
-            self._scan_points = points
+            self.scan.set(points)
         self._publish_state()
 
     def _on_tf_static(self, message):
@@ -134,5 +140,4 @@ class RobotPanel(Panel):
         with self._lock:
             sim, rtf = self._sim_time_and_rtf()
             robot = scene.robot_state(*self._odom[:3]) if self._odom else None
-            self.state.set({"stamp_ms": int(time.time() * 1000), "sim_time": sim, "rtf": rtf, "robot": robot,
-                            "scan": self._scan_points})
+            self.state.set({"stamp_ms": int(time.time() * 1000), "sim_time": sim, "rtf": rtf, "robot": robot})

@@ -2,8 +2,8 @@
  * The map panel: /map as RViz's Map display draws it (unknown grey, free white, occupied black; opaque, above
  * the simulator's floor and below the robot), and the fixed frame: map once a map has come, else odom.
  */
-import {addMessage, app, decodePng, isNumber, labView, requestRender, updatePanels} from '../core.js';
-import {addLayer, drawGridImage, updateView} from '../view.js';
+import {addMessage, app, decodePng, isNumber, labView, updatePanels} from '../core.js';
+import {addLayer, drawGridImage, redraw, updateView} from '../view.js';
 
 let mapImage = null;            // the decoded map PNG, with the frame it came in
 
@@ -11,7 +11,7 @@ function onFixed(frame) {
   app.fixed = frame;
   labView.fixedFrame = frame.frame;
   updateView();
-  requestRender('world');
+  redraw('live');   // the planes that move with odom, or draw in another frame now, are redrawn with it
 }
 
 /** Decodes each map PNG once; redraws use the decoded image. */
@@ -29,7 +29,7 @@ function onMap(frame) {
     labView.maps += 1;
     if (labView.maps === 1) updatePanels();   // what needs a map shows from now on
     updateView();
-    requestRender('world');
+    redraw('grids');
   });
 }
 
@@ -58,6 +58,7 @@ function onHello(frame) {
   app.mapRegion = null;
   app.fixed = null;
   labView.fixedFrame = typeof frame.world_frame === 'string' ? frame.world_frame : 'odom';
+  redraw();
 }
 
 export default {name: 'map', setup, onHello, frames: {map: onMap, fixed: onFixed}};

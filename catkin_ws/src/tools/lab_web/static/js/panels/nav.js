@@ -7,8 +7,8 @@
  * Each item is drawn in its own frame: the fixed frame as it is, the picked robot's odom through map -> odom; others
  * not at all.
  */
-import {addMessage, app, decodeFloat32, decodePng, isNumber, labView, requestRender} from '../core.js';
-import {addLayer, currentView, drawGridImage, strokeLine, tracePath, worldToPixel} from '../view.js';
+import {addMessage, app, decodeFloat32, decodePng, isNumber, labView} from '../core.js';
+import {addLayer, currentView, drawGridImage, redraw, tracePath, worldToPixel} from '../view.js';
 
 const COSTMAP_ALPHA = 0.7;
 const COLORS = {global: '#00b000', local: '#e0c000', particle: 'rgb(255, 25, 0)', amcl: '#4060ff',
@@ -25,7 +25,7 @@ function onCostmap(frame) {
   decodePng(`${frame.name} costmap`, frame.png, (image) => {
     costmaps[frame.name] = {image, frame};
     labView.costmaps += 1;
-    requestRender('world');
+    redraw('grids');
   });
 }
 
@@ -47,7 +47,8 @@ function onNav(frame) {
     else addMessage('particle cloud: its poses do not add up to its count');
   }
   labView.nav = nav;
-  requestRender('world');
+  if (particles) redraw('particles');
+  redraw('vectors');      // cheap without the particles (and it draws them where they are in odom)
 }
 
 function fixedFrame() {
@@ -65,17 +66,23 @@ function inLayer(frame, layerFrame) {
   return frame === odomFrame() && layerFrame === 'odom';
 }
 
+/** An arrow as one path (shaft and both sides of its head) stroked once: a third of the strokes of three lines. */
 function arrow(ctx, pose, lengthPx, color, width) {
   const [x, y, yaw] = pose;
   const [ax, ay] = worldToPixel(x, y);
   const [bx, by] = [ax + lengthPx * Math.cos(yaw), ay - lengthPx * Math.sin(yaw)];
-  ctx.lineWidth = width;
-  strokeLine(ctx, ax, ay, bx, by, color);
   const head = Math.max(lengthPx * 0.3, 3);
+  ctx.lineWidth = width;
+  ctx.strokeStyle = color;
+  ctx.beginPath();
+  ctx.moveTo(ax, ay);
+  ctx.lineTo(bx, by);
   for (const side of [-1, 1]) {
     const back = yaw + Math.PI - side * 0.5;
-    strokeLine(ctx, bx, by, bx + head * Math.cos(back), by - head * Math.sin(back), color);
+    ctx.moveTo(bx, by);
+    ctx.lineTo(bx + head * Math.cos(back), by - head * Math.sin(back));
   }
+  ctx.stroke();
 }
 
 /** One standard deviation of the position: the ellipse's axes are the square roots of the covariance's
@@ -103,11 +110,23 @@ function drawAmcl(ctx, amcl) {
   arrow(ctx, [x, y, yaw], 0.4 * scale, COLORS.amcl, 3);
 }
 
-function drawLayer(ctx, layerFrame) {
+function drawCostmaps(ctx, layerFrame) {
   for (const name of ['global', 'local']) {
     const costmap = costmaps[name];
     if (costmap && inLayer(costmap.frame.frame, layerFrame)) drawGridImage(ctx, costmap.image, costmap.frame, COSTMAP_ALPHA);
   }
+}
+
+/** amcl's cloud, an arrow per particle. */
+function drawParticles(ctx, layerFrame) {
+  if (!nav || !nav.particles || !inLayer(nav.particles.frame, layerFrame)) return;
+  const poses = nav.particles.poses;
+  const lengthPx = PARTICLE_LENGTH_M * currentView().scale;
+  for (let i = 0; i + 2 < poses.length; i += 3) arrow(ctx, [poses[i], poses[i + 1], poses[i + 2]], lengthPx, COLORS.particle, 2);
+}
+
+/** The plans, amcl's pose, the goal and the frontiers: above both costmaps and the particles. */
+function drawVectors(ctx, layerFrame) {
   if (!nav) return;
   for (const name of ['global', 'local']) {
     const plan = (nav.plans || {})[name];
@@ -119,12 +138,6 @@ function drawLayer(ctx, layerFrame) {
     ctx.stroke();
   }
   const scale = currentView().scale;
-  if (nav.particles && inLayer(nav.particles.frame, layerFrame)) {
-    const poses = nav.particles.poses;
-    for (let i = 0; i + 2 < poses.length; i += 3) {
-      arrow(ctx, [poses[i], poses[i + 1], poses[i + 2]], PARTICLE_LENGTH_M * scale, COLORS.particle, 2);
-    }
-  }
   if (nav.amcl && inLayer(nav.amcl.frame, layerFrame) && nav.amcl.covariance.every(isNumber)) drawAmcl(ctx, nav.amcl);
   if (nav.goal && inLayer(nav.goal.frame, layerFrame)) arrow(ctx, nav.goal.pose, 0.5 * scale, COLORS.goal, 4);
   for (const marker of nav.frontiers || []) {
@@ -151,14 +164,21 @@ function drawMarker(ctx, marker, scale) {
 function setup() {
   labView.costmaps = 0;
   labView.covarianceEllipse = covarianceEllipse;
-  addLayer(16, (ctx) => drawLayer(ctx, 'fixed'), 'fixed');
-  addLayer(17, (ctx) => drawLayer(ctx, 'odom'), 'odom');
+  addLayer(16, (ctx) => drawCostmaps(ctx, 'fixed'), 'fixed');    // with the map: they change as often
+  addLayer(17, (ctx) => drawCostmaps(ctx, 'odom'), 'odom');
+  addLayer(18, (ctx) => drawParticles(ctx, 'fixed'), 'fixed');   // a plane of their own: amcl moves odom often
+  addLayer(19, (ctx) => drawVectors(ctx, 'fixed'), 'fixed');
+  addLayer(19.5, (ctx) => {
+    drawParticles(ctx, 'odom');
+    drawVectors(ctx, 'odom');
+  }, 'odom');
 }
 
 function onHello() {
   nav = null;
   labView.nav = null;
   for (const name of Object.keys(costmaps)) delete costmaps[name];
+  redraw();
 }
 
 export default {name: 'nav', setup, onHello, frames: {costmap: onCostmap, nav: onNav}};

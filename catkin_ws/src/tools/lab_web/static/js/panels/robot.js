@@ -2,8 +2,8 @@
  * The robot panel: the driven robot from `state` frames (its pose from /odom, its trail, the newest LiDAR sweep)
  * on the world canvas, and the sim time, real-time factor and state rate in the top bar.
  */
-import {$, app, decodeFloat32, isNumber, labView, recordLatency, requestRender, setText, updatePanels, validRobot} from '../core.js';
-import {COLORS, ROBOT_RADIUS_M, addLayer, currentView, strokeLine, tracePath, updateView, worldToPixel}
+import {$, app, decodeFloat32, isNumber, labView, recordLatency, setText, updatePanels, validRobot} from '../core.js';
+import {COLORS, ROBOT_RADIUS_M, addLayer, currentView, redraw, strokeLine, tracePath, updateView, worldToPixel}
   from '../view.js';
 
 const TRAIL_MAX_POINTS = 3000;
@@ -15,22 +15,19 @@ function updateTrail(update) {
   if (app.trail.length > TRAIL_MAX_POINTS) app.trail = app.trail.slice(app.trail.length - TRAIL_MAX_POINTS);
 }
 
-let scanText = null;            // the newest sweep as sent, and as [[x, y], ...]
-let scanPoints = [];
+let scanPoints = [];            // the newest sweep's hits as [[x, y], ...]: a state frame brings a sweep only once
 
-/** The sweep's hits as [[x, y], ...], decoded once per sweep (state frames repeat it until the next one). */
+/** The sweep's hits as [[x, y], ...]. */
 function scanHits(base64) {
-  if (base64 !== scanText) {
-    const values = decodeFloat32(base64) || [];
-    scanPoints = [];
-    for (let i = 0; i + 1 < values.length; i += 2) scanPoints.push([values[i], values[i + 1]]);
-    scanText = base64;
-  }
-  return scanPoints;
+  const values = decodeFloat32(base64) || [];
+  const points = [];
+  for (let i = 0; i + 1 < values.length; i += 2) points.push([values[i], values[i + 1]]);
+  return points;
 }
 
 function onState(frame) {
-  frame.scan = scanHits(frame.scan);
+  if (typeof frame.scan === 'string') scanPoints = scanHits(frame.scan);
+  frame.scan = scanPoints;
   app.state = frame;
   updateTrail(frame.trail);
   labView.frames += 1;
@@ -44,7 +41,7 @@ function onState(frame) {
   setText($('sim-time'), isNumber(frame.sim_time) ? frame.sim_time.toFixed(1) : '—');
   setText($('rtf'), isNumber(frame.rtf) ? `${frame.rtf.toFixed(2)}x` : '—');
   updateView();
-  requestRender('world');
+  redraw('live');
 }
 
 /** Frames per second of state frames, counted over the last second. */
@@ -97,6 +94,7 @@ function setup() {
 function onHello() {
   app.state = null;
   app.trail = [];
+  scanPoints = [];
   app.robotSeen = false;
   labView.robot = null;
 }

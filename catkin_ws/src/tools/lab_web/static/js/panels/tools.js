@@ -6,8 +6,8 @@
  * while some node subscribes to its topic (amcl to /initialpose, move_base to its goal and cancel topics), so the
  * Week 4 arena or turtlesim offers nothing that would go nowhere.
  */
-import {$, app, element, isPageKey, requestRender, send} from '../core.js';
-import {addLayer, canvas, canvasPoint, currentView, pixelToWorld, strokeLine, worldToPixel} from '../view.js';
+import {$, app, element, isPageKey, send} from '../core.js';
+import {addLayer, canvas, canvasPoint, currentView, pixelToWorld, redraw, strokeLine, worldToPixel} from '../view.js';
 
 const TOOLS = [
   {kind: 'initial_pose', label: '2D Pose Estimate', topic: '/initialpose', color: '#2fa84f',
@@ -98,12 +98,12 @@ function setup() {
     event.stopImmediatePropagation();
     const at = pixelToWorld(...canvasPoint(event));
     drag = {tool: TOOLS.find((tool) => tool.kind === app.tool), start: at, end: at};
-    requestRender('world');
+    redraw('live');
   }, true);
   window.addEventListener('mousemove', (event) => {
     if (!drag) return;
     drag.end = pixelToWorld(...canvasPoint(event));
-    requestRender('world');
+    redraw('live');
   });
   window.addEventListener('mouseup', (event) => {
     if (!drag || event.button !== 0) return;
@@ -111,13 +111,13 @@ function setup() {
     publish(drag);
     drag = null;
     choose(null);                       // one use, then back to the default tool, as RViz does
-    requestRender('world');
+    redraw('live');
   });
   window.addEventListener('keydown', (event) => {
     if (event.key === 'Escape' && isPageKey(event) && (drag || app.tool)) {
       drag = null;
       choose(null);
-      requestRender('world');
+      redraw('live');
     }
   });
 }

@@ -3,10 +3,10 @@
  * static shapes as tb3_sim's drawing primitives, sent once), and the box tool: click the floor to drop a box, drag
  * a box to move it, right-click or Delete to remove it, and the Reset world button.
  */
-import {$, addVisibility, app, labView, isPageKey, request, requestRender, updatePanels, validRobot}
+import {$, addVisibility, app, labView, isPageKey, request, updatePanels, validRobot}
   from '../core.js';
-import {COLORS, ROBOT_RADIUS_M, addLayer, canvas, canvasPoint, currentView, drawBody, pixelToOdom, tracePath,
-  updateView, worldToPixel} from '../view.js';
+import {COLORS, ROBOT_RADIUS_M, addLayer, canvas, canvasPoint, currentView, drawBody, pixelToOdom, redraw,
+  tracePath, updateView, worldToPixel} from '../view.js';
 
 const CLICK_SLOP_PX = 4;              // mouse travel up to this is a click, beyond it a drag
 const CAP_HEIGHT_PER_EM = 0.73;       // DejaVu Sans: a Text's height is its cap height
@@ -20,14 +20,14 @@ function onWorld(frame) {
   if (app.mouse && app.mouse.model && !findModel(app.mouse.model.name)) app.mouse = null;
   updateView();
   updatePanels();
-  requestRender('world');
+  redraw('live');
 }
 
 function onScene(frame) {
   app.scene = Array.isArray(frame.primitives) ? frame.primitives : null;
   labView.scenePrimitives = app.scene ? app.scene.length : 0;
   labView.sceneFrames += 1;
-  requestRender('world');
+  redraw('grids');
 }
 
 function hasWorld() {
@@ -41,7 +41,7 @@ function updateVisibility() {
   const wasHidden = section.hidden;
   section.hidden = !shown;
   $('reset-world').hidden = !shown;     // tb3_sim's /gazebo/reset_world: nothing to reset on turtlesim
-  if (wasHidden && shown) requestRender('world');
+  if (wasHidden && shown) redraw();
   return shown;
 }
 
@@ -58,7 +58,7 @@ function rgbText(rgb) {
 function sceneImage(src) {
   if (!sceneImages.has(src)) {
     const image = new Image();
-    image.onload = () => requestRender('world');
+    image.onload = () => redraw('grids');
     image.src = src;
     sceneImages.set(src, image);
   }
@@ -230,14 +230,14 @@ function undoMove(context) {
   if (context.model.x === context.x && context.model.y === context.y) {
     context.model.x = context.old.x;
     context.model.y = context.old.y;
-    requestRender('world');
+    redraw('live');
   }
 }
 
 function deleteModel(name) {
   request('delete_model', {name});
   if (app.selectedModel === name) app.selectedModel = null;
-  requestRender('world');
+  redraw('live');
 }
 
 function setup() {
@@ -260,7 +260,7 @@ function setup() {
     if (m.model && (moved || m.dragging)) {
       m.dragging = true;
       canvas.style.cursor = 'grabbing';
-      requestRender('world');
+      redraw('live');
     }
   });
   window.addEventListener('mouseup', (event) => {
@@ -278,7 +278,7 @@ function setup() {
       app.selectedModel = null;
       spawnBox(m.start[0], m.start[1]);
     }
-    requestRender('world');
+    redraw('live');
   });
   // Hover feedback: a hand over models, a crosshair over the floor.
   canvas.addEventListener('mousemove', (event) => {
@@ -297,7 +297,7 @@ function setup() {
       deleteModel(app.selectedModel);
     } else if (event.key === 'Escape' && app.mouse) {
       app.mouse = null;                   // cancel a drag
-      requestRender('world');
+      redraw('live');
     }
   });
   $('reset-world').addEventListener('click', () => request('reset_world', {}));
