@@ -36,7 +36,7 @@ PART5_TARGET_S = 90.0
 PART6_TARGET_S = 180.0
 CLASS_TARGET_S = 600.0
 STAGES = ("building (and starting the simulator)", "starting the simulator", "starting its world", "finding its node",
-          "checks")
+          "checks", "closing")
 
 
 def grade(folder, out, factor, jobs, suite="week4"):

@@ -10,6 +10,7 @@ from lab_grader.checks import runner
 from lab_grader.checks.action_checks import ActionObservation, judge_action
 from lab_grader.checks.motion import Observation
 from lab_grader.checks.service_checks import judge
+from lab_grader.checks.timeline import Timeline
 from lab_grader.checks.verdicts import ERROR, FAIL, PASS, FoundService
 from lab_grader.suite_file import Range, SuiteError, load_suite
 
@@ -117,6 +118,9 @@ def test_int64_sums_compare_exactly():
 
 class ActionContext:
     """No robot; the service is found, the action is not."""
+
+    def __init__(self):
+        self.timeline = Timeline()
 
     def wait_until_ready(self):
         pass

@@ -5,6 +5,7 @@ submission tampering with the measurement) outranking every other verdict."""
 import json
 import math
 import os
+import re
 
 import pytest
 
@@ -12,6 +13,7 @@ from lab_grader.checks import interference, runner, service_checks
 from lab_grader.checks.fields import same_value
 from lab_grader.checks.ground_truth import Seen, WorldChange
 from lab_grader.checks.motion import Observation
+from lab_grader.checks.timeline import Timeline
 from lab_grader.checks.verdicts import (
     ERROR,
     FAIL,
@@ -222,6 +224,7 @@ class FakeContext:
     approach_service; `interrupt_at` raises Interrupted at that call."""
 
     def __init__(self, interrupt_at=None):
+        self.timeline = Timeline()
         self.calls = 0
         self.interrupt_at = interrupt_at
         self.stopped = 0
@@ -326,7 +329,9 @@ def test_serve_grades_exercise_after_exercise_with_one_context(tmp_path):
     assert set(first["services"]) == {"/move_service"}
     second = json.loads((tmp_path / "checks-2.json").read_text())
     assert len(second["checks"]) == 8 and {check["verdict"] for check in second["checks"]} == {ERROR}
-    assert (tmp_path / "checks-1.log").read_text().splitlines()[1].startswith("[1/2] pass")
+    first_log = (tmp_path / "checks-1.log").read_text().splitlines()
+    assert first_log[1].endswith("s to find them") and first_log[2].startswith("[1/2] pass")
+    assert re.fullmatch(r"\d+\.\d s: judge \d+\.\d\d", first_log[3].strip())   # where the check's time went
     assert (tmp_path / "checks-2.log").read_text().splitlines()[-1].startswith("score 0/34 ->")
 
 

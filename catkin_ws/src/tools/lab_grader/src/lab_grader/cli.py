@@ -20,6 +20,7 @@ from pathlib import Path
 
 import rospkg
 
+from lab_grader import pictures
 from lab_grader.batch import Progress, grade_all, parse_shard
 from lab_grader.class_report import read_results, write_class_report
 from lab_grader.grade import SubmissionGrader
@@ -119,6 +120,7 @@ def grade_class(args, suite, shard, work_root):
         return SubmissionGrader(suite, work_root / "boxes", lab_root(), reservation.slot, dict(os.environ), args.rtf)
 
     (work_root / "boxes").mkdir(mode=0o711)
+    pictures.warm()   # the reports' matplotlib, imported while the first packages build
     try:
         grade_all(submissions, make_grader, args.out, jobs, Progress(len(submissions)))
     finally:

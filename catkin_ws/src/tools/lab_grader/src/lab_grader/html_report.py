@@ -2,12 +2,10 @@
 URL): the score, a table of checks with their kinds, verdicts, reasons and evidence, a table of the services as
 found, a table of the nodes (which file served each exercise, how it was found, and the traceback of a node that
 crashed), and catkin's error lines and the log's end when the build failed. Every text from the submission is
-escaped. No ROS import."""
+escaped. No ROS import; matplotlib is imported when a picture is first drawn (lab_grader.pictures)."""
 import base64
 import html
 import json
-
-from lab_grader.trajectory_picture import trajectory_png
 
 STYLE = """
 body { font: 14px/1.4 system-ui, sans-serif; margin: 2em auto; max-width: 1100px; color: #222; }
@@ -78,6 +76,7 @@ def report_html(result, worlds) -> str:
         build_log = ("<h2>Build errors (catkin_make)</h2><pre id='build-errors'>{}</pre><details><summary>the build "
                      "log's end</summary><pre>{}</pre></details>".format(esc(errors), esc(build.get("log_tail") or "")))
     pictures = []
+    from lab_grader.trajectory_picture import trajectory_png  # matplotlib: see lab_grader.pictures
     for world, check_ids in worlds:
         checks = [check for check in result["checks"] if check["id"] in check_ids]
         if any((check.get("evidence") or {}).get("trajectory") for check in checks):

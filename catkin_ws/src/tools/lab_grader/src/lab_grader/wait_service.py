@@ -6,7 +6,7 @@ import time
 
 import rosgraph
 
-POLL_S = 0.2
+POLL_S = 0.05
 
 
 def wait_for_service(name, timeout_s):

@@ -42,6 +42,10 @@ the student's nodes. It
   says the node has ended by itself (the file `ended_path` exists) and the robot has rested for RESTED_AFTER_END_S,
   the recording ends there (nothing more can happen: the course's colour search exits after its last pillar).
 
+Each wait above is lapped on `timeline` (lab_grader.checks.timeline) as it ends, for the runner's log: heard,
+reset and rest (prepare), reply, tail and front (a call), client, result, tail and front (a goal), first motion and
+recording (a run).
+
 A suite without a world has no robot (`robot=False`): no /odom, /scan or /cmd_vel, nothing to reset, ROS time is
 wall time, and observations carry no samples.
 
@@ -71,6 +75,7 @@ from lab_grader.checks.action_checks import ActionObservation
 from lab_grader.checks.ground_truth import TruthClient
 from lab_grader.checks.motion import Observation, is_still
 from lab_grader.checks.run_checks import RunObservation
+from lab_grader.checks.timeline import Timeline
 from lab_grader.checks.verdicts import CheckError, FoundService, InterferenceError, Interrupted
 from lab_grader.suite_file import GOAL_STATES
 
@@ -258,6 +263,7 @@ class GradingContext:
         self._window = None               # the ground-truth Mark of the current check's start (prepare)
         self.ready_path = None            # a run's node is started by the grader once this file exists
         self.ended_path = None            # the grader creates this file when a run's node has ended by itself
+        self.timeline = Timeline()        # the current check's phases (lab_grader.checks.timeline), begun by the runner
         if not robot:
             return
         self._truth = TruthClient(ground_truth)
@@ -486,17 +492,20 @@ class GradingContext:
         if not self.robot:
             return
         self._wait_commands_heard()
+        self.timeline.lap("heard")
         self._window = self._truth.mark()
         self._watch.restart()
         self.stop_robot()
         reset_s = self._truth.request("reset_world")["t"]
         self.stop_robot()
+        self.timeline.lap("reset")
         deadline = time.monotonic() + still_timeout_s
         while True:
             after = [sample for sample in self._truth.since(self._window).samples
                      if sample.t >= reset_s + RESET_MARGIN_S]
             tail = after[-STILL_SAMPLES:]
             if len(tail) == STILL_SAMPLES and all(is_still(sample) for sample in tail):
+                self.timeline.lap("rest")
                 return
             self._check_running()
             self._check_interference()
@@ -547,6 +556,7 @@ class GradingContext:
         sent_s = self.now()
         call = _Call(proxy, request, self.now)
         answered = self._wait_sim(sent_s + timeout_s, call.done.is_set)
+        self.timeline.lap("reply")
         if not answered:
             error = "no reply within {:g} s of sim time".format(timeout_s)
         elif call.error is not None:
@@ -555,8 +565,10 @@ class GradingContext:
             reply, replied_s = message_dict(call.reply), call.replied_s
             if self.robot:
                 self._wait_sim(replied_s + settle_s)
+                self.timeline.lap("tail")
             if measure_front:
                 front, front_measured = self._truth.request("front_distance")["front_m"], True
+                self.timeline.lap("front")
         samples, interfered = None, ()
         if self.robot:
             samples = ((origin,) if origin is not None else ()) + self._truth.since(recording).samples
@@ -586,6 +598,7 @@ class GradingContext:
                        measure_front=False):
         """Send one goal with `goal_fields` to `action.found` and record how it went (an ActionObservation)."""
         client, recorder = self._action_client(action)
+        self.timeline.lap("client")
         origin, recording = (self._truth.latest, self._truth.mark()) if self.robot else (None, None)
 
         def robot_record(ended_s):
@@ -595,9 +608,11 @@ class GradingContext:
             front = {}
             if ended_s is not None:
                 self._wait_sim(ended_s + settle_s)
+                self.timeline.lap("tail")
                 if measure_front:
                     front = dict(front_distance_m=self._truth.request("front_distance")["front_m"],
                                  front_measured=True)
+                    self.timeline.lap("front")
             samples = ((origin,) if origin is not None else ()) + self._truth.since(recording).samples
             return dict(front, samples=samples, interference=tuple(self._findings()))
 
@@ -623,7 +638,9 @@ class GradingContext:
         if cancel_after_s is not None and not self._wait_sim(sent_s + cancel_after_s, ended.is_set):
             cancelled_s = self.now()
             client.cancel_goal()
-        if not self._wait_sim(sent_s + timeout_s, ended.is_set):
+        ended_in_time = self._wait_sim(sent_s + timeout_s, ended.is_set)
+        self.timeline.lap("result")
+        if not ended_in_time:
             client.cancel_goal()
             return ActionObservation(dict(goal_fields), None, "", None, feedback(), sent_s, cancelled_s, None,
                                      error="no result within {:g} s".format(timeout_s), **robot_record(None))
@@ -663,8 +680,11 @@ class GradingContext:
             return latest.t - rested_since[0] >= RESTED_AFTER_END_S
 
         rested_since = []
-        if self._wait_sim(started_s + start_s, moved):
+        has_moved = self._wait_sim(started_s + start_s, moved)
+        self.timeline.lap("first motion")
+        if has_moved:
             self._wait_sim(first_motion[0] + duration_s, over)
+            self.timeline.lap("recording")
         samples = ((origin,) if origin is not None else ()) + self._truth.since(recording).samples
         return RunObservation(started_s, samples, tuple(self._findings()))
 

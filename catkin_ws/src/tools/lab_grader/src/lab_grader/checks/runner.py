@@ -12,7 +12,8 @@ context failing to start) gets an error verdict; every check of the suite is lis
 the results file (lab_grader.checks.verdicts) is always written, atomically, also when checks errored or the
 runner was interrupted (then "complete": false); exit code 0 once it is written, 2 for a bad suite or arguments
 (nothing written), 1 if the file could not be written. Each check prints one line, `[3/17] pass  timed_fwd ...`,
-as it ends (the grader shows the latest in its progress line).
+as it ends (the grader shows the latest in its progress line), and under it where its wall time went (the context's
+timeline: `      6.2 s: heard 0.00, reset 0.01, rest 0.20, reply 5.02, tail 1.01, judge 0.01`).
 
 `--serve` (instead of --out) is the grader's way, which runs each exercise's node alone: one runner (one rospy node,
 one ground-truth connection, made while the first exercise's node starts) grades exercise after exercise, each on
@@ -97,6 +98,7 @@ def run_suite(suite, make_context, check_timeout_s=None, log=print):
             log("{} {}: {}".format("action" if name in action_names else "service", name,
                                    "{} ({}, {})".format(service.found, service.found_by, service.found_type)
                                    if service.found else "not found: {}".format(service.note)))
+        log("      {:.1f} s to find them".format(time.monotonic() - wall_start))
     except (Interrupted, KeyboardInterrupt):
         interrupted = True
         setup_error = "the runner was interrupted before the checks started"
@@ -112,14 +114,18 @@ def run_suite(suite, make_context, check_timeout_s=None, log=print):
         else:
             if check_timeout_s is not None:
                 check = check._replace(timeout_s=check_timeout_s)
+            context.timeline.begin()
             try:
                 verdict = kind_of(check).run(check, suite, context, found, runs)
             except (Interrupted, KeyboardInterrupt):
                 interrupted = True
                 verdict = Verdict.errored("not run: the runner was interrupted", not_run_evidence(check))
+            context.timeline.lap("judge")
         result = CheckResult(check.id, check.title, check.weight, verdict, check.kind)
         results.append(result)
         log("[{}/{}] {}".format(number, len(suite.checks), summarize_verdicts([result])[0]))
+        if context is not None and setup_error is None and not interrupted:
+            log("      " + context.timeline.words())
 
     timing = {"wall_s": round(time.monotonic() - wall_start, 2)}
     if context is not None and sim_start is not None:
