@@ -86,8 +86,9 @@ judged on the one recording (lab_grader.checks.run_checks documents the quantiti
     runs:
       - node: colour_search.py        # the course's file name (rosrun <package> colour_search.py)
         duration_s: 75                # sim s recorded from the robot's first motion on
-        start_s: 60                   # optional (60): sim s from the reset for the robot's first motion (else the
-                                      #   recording ends there: a node that never moves the robot)
+        start_s: 60                   # optional (60): s from the reset for the robot's first motion, in sim time
+                                      #   and at least as many wall s for the node's start-up (else the recording
+                                      #   ends there: a node that never moves the robot)
       - node: line_follower.py
         duration_s: 45
         world: tuos_simulations/worlds/line_following.yaml   # optional (the suite's world, which a suite with runs

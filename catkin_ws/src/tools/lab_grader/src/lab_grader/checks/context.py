@@ -38,9 +38,10 @@ the student's nodes. It
 
 - records one run (`observe_run`): once the robot is prepared, it tells the grader to start the student's node
   (it creates the file `ready_path`, when set) and records the true motion and the interference from then until
-  the run's duration after the robot first moved (in sim time), or its start_s without motion; once the grader
-  says the node has ended by itself (the file `ended_path` exists) and the robot has rested for RESTED_AFTER_END_S,
-  the recording ends there (nothing more can happen: the course's colour search exits after its last pillar).
+  the run's duration after the robot first moved (in sim time), or its start_s (of sim and of wall time) without
+  motion; once the grader says the node has ended by itself (the file `ended_path` exists) and the robot has rested
+  for RESTED_AFTER_END_S, the recording ends there (nothing more can happen: the course's colour search exits after
+  its last pillar).
 
 Each wait above is lapped on `timeline` (lab_grader.checks.timeline) as it ends, for the runner's log: heard,
 reset and rest (prepare), reply, tail and front (a call), client, result, tail and front (a goal), first motion and
@@ -318,14 +319,15 @@ class GradingContext:
             with self._changed:
                 self._changed.wait(WAIT_SLICE_WALL_S)
 
-    def _wait_sim(self, until_s, done=lambda: False):
-        """Wait until `done()` (True) or sim time `until_s` (False), watching for a stalled clock, interference and
-        shutdown."""
+    def _wait_sim(self, until_s, done=lambda: False, at_least_wall_s=0.0):
+        """Wait until `done()` (True) or sim time `until_s` (False), and for at least `at_least_wall_s` wall seconds
+        unless done, watching for a stalled clock, interference and shutdown."""
         self._sim_seen = (None, time.monotonic())
+        wall_until = time.monotonic() + at_least_wall_s
         while True:
             if done():
                 return True
-            if self.now() >= until_s:
+            if self.now() >= until_s and time.monotonic() >= wall_until:
                 return False
             self._check_running()
             self._check_interference()
@@ -652,8 +654,10 @@ class GradingContext:
 
     def observe_run(self, duration_s, start_s):
         """Tell the grader to start the run's node (create `ready_path`), then record the robot until `duration_s`
-        of sim time after it first moved, or `start_s` after now if it never moves (a RunObservation). The robot
-        must have been prepared."""
+        of sim time after it first moved, or, if it never moves, until `start_s` of sim time and of wall time have
+        both passed (a RunObservation). The wall-clock floor is for the node's start-up: Python and OpenCV imports
+        take wall time, which a loaded machine stretches: at factor 2 and load 20, a sample line follower had not
+        moved after 60 s of sim time, 30 wall seconds. The robot must have been prepared."""
         if not self.robot:
             raise CheckError("a run needs a robot: the suite has no world")
         origin, recording = self._truth.latest, self._truth.mark()
@@ -680,7 +684,7 @@ class GradingContext:
             return latest.t - rested_since[0] >= RESTED_AFTER_END_S
 
         rested_since = []
-        has_moved = self._wait_sim(started_s + start_s, moved)
+        has_moved = self._wait_sim(started_s + start_s, moved, at_least_wall_s=start_s)
         self.timeline.lap("first motion")
         if has_moved:
             self._wait_sim(first_motion[0] + duration_s, over)
