@@ -13,7 +13,9 @@ the student's nodes. It
   of /cmd_vel (at most COMMANDS_HEARD_WALL_S: a node's first command, published before the simulator connected to
   it, would be lost; lab_grader.checks.command_links), zeroes /cmd_vel (tb3_sim holds the last command), resets
   through the channel, then waits until the robot is at rest (STILL_SAMPLES consecutive still samples stamped
-  RESET_MARGIN_S or more after the reset, within `still_timeout_s` wall seconds);
+  RESET_MARGIN_S or more after the reset, within `still_timeout_s` wall seconds) and until SENSORS_AFTER_RESET_S of
+  sim time have passed since the reset: a node that keeps the latest /scan (the course's template does) must have
+  had a sweep taken after the reset, as it has when a marker resets Gazebo and then types the call;
 - makes one graded call (`observe`): records the true motion from before the call, calls the service on a daemon
   thread, waits for the reply for at most `timeout_s` seconds of SIM time (the simulator's, so the verdict does
   not depend on its real-time factor), keeps recording for `settle_s` of sim time after the reply, and, if asked,
@@ -88,6 +90,8 @@ CMD_VEL_CONNECT_WALL_S = 5.0   # wait this long for the simulator to connect to 
 COMMANDS_HEARD_WALL_S = 5.0    # ... and before a check, this long for it to connect to every /cmd_vel publisher
 STILL_SAMPLES = 3              # consecutive still samples (0.1 s at 30 Hz) after a reset = at rest
 RESET_MARGIN_S = 0.1           # only samples stamped this much sim time after the reset count as "after it"
+SENSORS_AFTER_RESET_S = 0.3    # sim s after a reset before a check: one LiDAR period (5 Hz) for a sweep taken
+                               # after it, 0.1 s for it to reach the student's node
 INTERFERENCE_POLL_WALL_S = 0.2  # the master's publishers are looked at this often during a check
 ACTION_CONNECT_WALL_S = 5.0    # an action client must connect to the server's topics within this
 SERVER_ERROR_TEXT = "responded with an error"   # rospy's words for a server's error answer (its callback raised)
@@ -506,7 +510,8 @@ class GradingContext:
             after = [sample for sample in self._truth.since(self._window).samples
                      if sample.t >= reset_s + RESET_MARGIN_S]
             tail = after[-STILL_SAMPLES:]
-            if len(tail) == STILL_SAMPLES and all(is_still(sample) for sample in tail):
+            if len(tail) == STILL_SAMPLES and all(is_still(sample) for sample in tail) \
+                    and tail[-1].t >= reset_s + SENSORS_AFTER_RESET_S:
                 self.timeline.lap("rest")
                 return
             self._check_running()
