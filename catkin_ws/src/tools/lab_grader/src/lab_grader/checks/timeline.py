@@ -38,10 +38,3 @@ class Timeline:
             return ""
         return "{:.1f} s: {}".format(sum(seconds for _, seconds in self.laps),
                                      ", ".join("{} {:.2f}".format(phase, seconds) for phase, seconds in self.laps))
-
-    def as_json(self) -> dict:
-        """{phase: wall seconds} (a phase lapped twice is summed), rounded to milliseconds."""
-        phases = {}
-        for phase, seconds in self.laps:
-            phases[phase] = round(phases.get(phase, 0.0) + seconds, 3)
-        return phases
