@@ -62,8 +62,8 @@ class Footprint:
             samples.append(a + t * (b - a))
         return np.vstack(samples)
 
-    def placed(self, x, y, yaw):
-        """The polygon's vertices at pose (x, y, yaw), (K, 2)."""
+    def placed(self, x, y, yaw, points=None):
+        """`points` in base_footprint ((K, 2); the polygon's vertices by default) at pose (x, y, yaw), (K, 2)."""
         c, s = np.cos(yaw), np.sin(yaw)
-        pts = self.array
+        pts = self.array if points is None else points
         return np.column_stack((x + c * pts[:, 0] - s * pts[:, 1], y + s * pts[:, 0] + c * pts[:, 1]))

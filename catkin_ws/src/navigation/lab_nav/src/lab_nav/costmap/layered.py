@@ -140,11 +140,10 @@ class LayeredCostmap:
         Without the outline's cells a laser mark on a cell the outline crosses, but whose centre lies just
         outside, stayed lethal under a robot touching an obstacle, so every trajectory from there collided and
         the robot stood pressed against a pillar through every later goal."""
-        inside_cols, inside_rows = self.cells_inside(self.params.footprint.placed(x, y, yaw))
-        points = self.params.footprint.outline(self.geometry.resolution / OUTLINE_SAMPLES_PER_CELL)
-        c, s = np.cos(yaw), np.sin(yaw)
-        outline_cols, outline_rows = self.geometry.world_to_cell(x + c * points[:, 0] - s * points[:, 1],
-                                                                 y + s * points[:, 0] + c * points[:, 1])
+        footprint = self.params.footprint
+        inside_cols, inside_rows = self.cells_inside(footprint.placed(x, y, yaw))
+        outline = footprint.placed(x, y, yaw, footprint.outline(self.geometry.resolution / OUTLINE_SAMPLES_PER_CELL))
+        outline_cols, outline_rows = self.geometry.world_to_cell(outline[:, 0], outline[:, 1])
         on_grid = self.geometry.contains(outline_cols, outline_rows)
         cols = np.concatenate((inside_cols, outline_cols[on_grid]))
         rows = np.concatenate((inside_rows, outline_rows[on_grid]))
