@@ -110,7 +110,9 @@ def test_the_reports_render_in_a_headless_browser_with_the_trajectory(graded):
         browser.driver.get((graded.out / "does_not_build" / "report.html").as_uri())
         assert "Parse error" in browser.script("return document.getElementById('build-errors').textContent;")
         browser.driver.get((graded.out / "summary.html").as_uri())
-        assert browser.script("return document.getElementById('histogram').naturalWidth;") > 100
+        assert browser.script("return document.getElementById('histogram').getBoundingClientRect().width;") > 100
+        assert browser.script("return [...document.querySelectorAll('#histogram rect.bar')]"
+                              ".reduce((sum, bar) => sum + Number(bar.dataset.students), 0);") == len(CLASS)
         assert browser.console_errors() == []
     finally:
         browser.quit()

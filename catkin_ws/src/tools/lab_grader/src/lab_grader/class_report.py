@@ -9,6 +9,7 @@ from pathlib import Path
 from typing import Iterable, List
 
 from lab_grader.grade import RESULT_FILE
+from lab_grader.summary_html import SUMMARY_PAGE, summary_html
 
 CSV_FILE = "class.csv"
 SUMMARY_FILE = "summary.json"
@@ -71,5 +72,4 @@ def write_class_report(results: List[dict], out_dir: Path) -> None:
     (out_dir / CSV_FILE).write_text(class_csv(results))
     content = summary(results)
     (out_dir / SUMMARY_FILE).write_text(json.dumps(content, indent=1, sort_keys=True))
-    from lab_grader.summary_html import SUMMARY_PAGE, summary_html  # matplotlib: see lab_grader.pictures
     (out_dir / SUMMARY_PAGE).write_text(summary_html(results, content))
