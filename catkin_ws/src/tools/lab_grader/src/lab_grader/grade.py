@@ -8,7 +8,8 @@ nodes the way the course says (`rosrun <package> <file>`: the file rosrun would 
 directly: `rosrun()`), then run the suite's checks (what `rosrun lab_grader
 run_checks` runs, as `python3 -m lab_grader.checks.runner`: trusted, so rosrun's package search, four catkin_find
 runs, is not needed) and read their JSON. One check runner serves every exercise of a submission (`run_checks
---serve`: an exercise per line on its stdin), started while the first exercise's node starts; only a runner stopped
+--serve`: an exercise per line on its stdin), started while the package builds (it waits for roscore and the
+simulator itself, and creates a file once they answer: the student's first node starts then); only a runner stopped
 because the student's node died, or one that overran, is replaced for the next exercise. A build that fails, a
 node that is missing or dies, a check runner that overruns: each is recorded with its evidence (the tail of the
 log) and the submission gets the checks' verdicts as far as they got; the batch goes on.
@@ -54,6 +55,8 @@ LOG_TAIL_CHARS = 3000
 BUILD_LOG_CHARS = 200000       # how much of the build log is searched for catkin's error lines
 ROS_PORT = 11311
 GROUND_TRUTH_SOCKET = "truth.sock"     # in the box's trusted folder (a Unix socket path must be short)
+STARTED_FILE = "ros-started"   # in the box's trusted folder: the first check runner creates it once roscore (and
+                               # the simulator) answer
 RESULT_FILE = "result.json"
 REPORT_FILE = "report.html"
 STUDENT_LIMITS = Limits(cpu_s=600, processes=512, output_bytes=1024 * 1024, wall_s=BUILD_TIMEOUT_S)
@@ -197,9 +200,14 @@ class SubmissionGrader:
         # roscore and the simulator start while the package builds (they do not need it): the two start-ups overlap
         # instead of adding up. A build that fails has cost a simulator start-up for nothing.
         on_stage("building (and starting {})".format(self._ros_what()))
+        # So does the first check runner: it waits for them itself, then connects (its imports, init_node and the
+        # ground-truth connection are made during the build) and says so by creating `started`.
         truth_socket = box.trusted_dir / GROUND_TRUTH_SOCKET
         self._simulator = None
         ready_service, startup_log = self._start_ros(box, out_dir, truth_socket, self.suite.exercises()[0])
+        started = box.trusted_dir / STARTED_FILE
+        runner = self._start_runner(box, out_dir, truth_socket, 1, ["--wait-service", ready_service, "--wait-s",
+                                                                    str(SIMULATOR_START_S), "--started", str(started)])
         build = box.run_student(["catkin_make"], env, out_dir / "build.log", timeout_s=BUILD_TIMEOUT_S)
         result["build"] = {"ok": build.ok, "stopped": build.stop_reason, "log_tail": None if build.ok
                            else log_tail(out_dir / "build.log"),
@@ -208,21 +216,22 @@ class SubmissionGrader:
             result["problems"].append("the package does not build (catkin_make)")
             return
         on_stage("starting {}".format(self._ros_what()))
-        ready = box.run_trusted(["python3", "-m", "lab_grader.wait_service", ready_service, str(SIMULATOR_START_S)],
-                                self.env, out_dir / "startup_wait.log", timeout_s=SIMULATOR_START_S + 10)
-        if not ready.ok:
+        deadline = time.monotonic() + SIMULATOR_START_S + RUNNER_EXIT_S    # the runner gives up after the first
+        while not started.exists() and runner.running() and time.monotonic() < deadline:
+            time.sleep(POLL_S)
+        if not started.exists():
             result["problems"].append("{} did not start: {}".format(self._ros_what(), log_tail(startup_log, 500)))
             return
         result.update(combine(self.suite, self._grade_exercises(box, submission, env, out_dir, result, on_stage,
-                                                                truth_socket)))
+                                                                truth_socket, runner)))
 
-    def _grade_exercises(self, box, submission, env, out_dir, result, on_stage, truth_socket):
-        """Grade the exercises one after the other, each with its node alone, through one check runner; the nodes'
-        records go into result["nodes"] and the problems into result["problems"]. Returns {exercise's file: its
-        results}."""
+    def _grade_exercises(self, box, submission, env, out_dir, result, on_stage, truth_socket, runner):
+        """Grade the exercises one after the other, each with its node alone, through one check runner (`runner`,
+        connected to the running simulator, to begin with); the nodes' records go into result["nodes"] and the
+        problems into result["problems"]. Returns {exercise's file: its results}."""
         parts = {}
         exercises = self.suite.exercises()
-        runner = None
+        runner_from = 1               # the exercise the running runner started at (its log's name)
         stopping = Stopping(None)     # the previous exercise's node, stopped while the next one starts
 
         def close_runner():
@@ -243,11 +252,7 @@ class SubmissionGrader:
                         parts[exercise.node] = not_run(self.suite, exercise, {"problem": problem})
                         continue
                 if runner is None:
-                    runner_log = out_dir / "checks-runner-{}.log".format(number)
-                    runner = box.start_trusted(
-                        ["python3", "-m", "lab_grader.checks.runner", "--suite", str(self.suite.path), "--serve",
-                         "--ground-truth", str(truth_socket), "--student-home", str(box.workspace)], self.env,
-                        runner_log, commands=True)
+                    runner, runner_from = self._start_runner(box, out_dir, truth_socket, number), number
                 checks_log = out_dir / "checks-{}.log".format(number)
                 checks_file = out_dir / "checks-{}.json".format(number)
                 checks_file.unlink(missing_ok=True)   # an earlier grading's, in the same output folder
@@ -289,8 +294,9 @@ class SubmissionGrader:
                 if checks is None:
                     why = ("its results file is unreadable" if ended is None
                            else ended.stop_reason or "exit {}".format(ended.returncode))
-                    result["problems"].append("the checks of {} did not finish ({}): {}".format(
-                        exercise.node, why, log_tail(checks_log, 500) or log_tail(runner_log, 500)))
+                    tail = log_tail(checks_log, 500) or log_tail(runner_log(out_dir, runner_from), 500)
+                    result["problems"].append("the checks of {} did not finish ({}): {}".format(exercise.node, why,
+                                                                                                  tail))
                     parts[exercise.node] = not_run(self.suite, exercise, node, "the checks did not finish")
                     continue
                 parts[exercise.node] = checks_as_crashed(checks, node) if crashed else checks
@@ -299,6 +305,13 @@ class SubmissionGrader:
                 close_runner()
             stopping.join()
         return parts
+
+    def _start_runner(self, box, out_dir, truth_socket, number, wait=()):
+        """Start a check runner serving this suite's exercises (`--serve`), its log named after the exercise
+        `number` it starts at; `wait`: its --wait-service arguments, if any."""
+        return box.start_trusted(["python3", "-m", "lab_grader.checks.runner", "--suite", str(self.suite.path),
+                                  "--serve", "--ground-truth", str(truth_socket), "--student-home", str(box.workspace),
+                                  *wait], self.env, runner_log(out_dir, number), commands=True)
 
     def _find_run_node(self, box, submission, exercise, env, out_dir):
         """(the node's record, a function that starts it: number -> SandboxProcess) for a run, or (record, None):
@@ -478,6 +491,11 @@ def wait_for_checks(runner, server, checks_file, ended=None):
             return runner.wait(0)
         time.sleep(POLL_S)
     return None
+
+
+def runner_log(out_dir: Path, number: int) -> Path:
+    """The log of the check runner that started at exercise `number`."""
+    return out_dir / "checks-runner-{}.log".format(number)
 
 
 def crash_report(log_path):

@@ -23,6 +23,13 @@ exercise adds `"ready": FILE`, created once the robot is reset and at rest: the 
 that exercise's results file and check lines, then reads the next line, and ends at the end of its input. Starting
 a runner per exercise cost its imports, init_node and connections each time (2-4 s of wall time an exercise on a
 loaded machine).
+
+`--wait-service NAME --started FILE` (the grader's first runner, started while the package builds): before anything
+else, wait (wall, --wait-s, 60 s by default) until the master lists service NAME (the simulator's, or roscore's
+rosout when the suite has no world), create FILE, then connect and serve. The grader starts the student's first
+node once FILE exists, so the runner's imports, init_node and ground-truth connection are made while catkin_make
+runs instead of after it, and no process of its own is started to ask the master (lab_grader.wait_service). Exit 3
+when NAME did not appear in time (nothing served).
 """
 import argparse
 import json
@@ -41,6 +48,7 @@ from lab_grader.checks.verdicts import (
     write_results,
 )
 from lab_grader.suite_file import SuiteError, load_suite
+from lab_grader.wait_service import wait_for_service
 
 
 class CheckKind(NamedTuple):
@@ -219,6 +227,13 @@ def parse_args(argv):
     parser.add_argument("--ground-truth", metavar="SOCKET", default=None,
                         help="tb3_sim's private ground-truth socket (its ~ground_truth_socket); needed when the "
                         "suite has a world: the checks measure the robot through it, never through /odom")
+    parser.add_argument("--wait-service", metavar="NAME", default=None,
+                        help="first wait until the master lists service NAME (the simulator is up), then create "
+                        "--started FILE")
+    parser.add_argument("--wait-s", type=positive_seconds, default=60.0, metavar="S",
+                        help="how long --wait-service waits, wall seconds (default 60)")
+    parser.add_argument("--started", type=Path, default=None, metavar="FILE",
+                        help="the file created once --wait-service's service is listed")
     parser.add_argument("--student-home", metavar="DIR", default=None,
                         help="the HOME of the student's nodes: the images a result names (\"~/...\") are looked for "
                         "there")
@@ -228,6 +243,8 @@ def parse_args(argv):
         parser.error("--serve takes its exercises and results files from stdin: no --out or --exercise")
     if not args.serve and args.out is None:
         parser.error("the following arguments are required: --out (or --serve)")
+    if (args.wait_service is None) != (args.started is None):
+        parser.error("--wait-service and --started go together")
     return args
 
 
@@ -241,6 +258,12 @@ def main(argv=None):
         print("run_checks: {}".format(error), file=sys.stderr)
         return 2
 
+    if args.wait_service is not None:
+        if not wait_for_service(args.wait_service, args.wait_s):
+            print("run_checks: service {} not listed by the master after {:g} s".format(args.wait_service, args.wait_s),
+                  file=sys.stderr)
+            return 3
+        args.started.touch()
     contexts = []
 
     def make_context():
