@@ -281,13 +281,14 @@ def sensible(pose, twist):
 def test_world_control_sequences(clean):
     """Any order of reset_world, reset_simulation, pause, unpause and get_world_properties: each call answers,
     and afterwards pause stops sim time and unpause starts it again. (~snapshot, a PNG render of a quarter
-    second, is left to the tb3_sim tests.)"""
+    second, is left to the tb3_sim tests.) Sequences of up to 4 calls (780 of them) give each service its
+    MIN_REQUESTS in about 1450 calls; up to 8 took 2293, 12 ms each."""
     fuzzers = {name: ServiceFuzzer("/gazebo/" + name, Empty) for name in EMPTY_SERVICES}
     properties = ServiceFuzzer("/gazebo/get_world_properties", GetWorldProperties)
     operations = EMPTY_SERVICES + ["get_world_properties"]
 
     @settings(FUZZ_SETTINGS, max_examples=2 * MIN_REQUESTS)
-    @given(sequence=st.lists(st.sampled_from(operations), min_size=1, max_size=8))
+    @given(sequence=st.lists(st.sampled_from(operations), min_size=1, max_size=4))
     def control(sequence):
         for name in sequence:
             reply = (properties if name == "get_world_properties" else fuzzers[name]).call()

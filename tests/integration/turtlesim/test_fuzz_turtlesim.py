@@ -218,11 +218,12 @@ def test_set_pen_fuzzed(turtlesim):
 
 def test_clear_reset_snapshot_sequences(turtlesim):
     """Any order of /clear, /reset and ~snapshot: every call succeeds; afterwards /reset still puts a new
-    turtle1 at the centre."""
+    turtle1 at the centre. 200 sequences of up to 5 calls (of the 363 there are) give each service its
+    MIN_REQUESTS in about 850 calls; up to 8 took 1132, 47 ms each (a snapshot writes a PNG)."""
     fuzzers = {name: ServiceFuzzer(name, Empty) for name in ["/clear", "/reset", "/turtlesim/snapshot"]}
 
     @FUZZ_SETTINGS
-    @given(sequence=st.lists(st.sampled_from(sorted(fuzzers)), min_size=1, max_size=8))
+    @given(sequence=st.lists(st.sampled_from(sorted(fuzzers)), min_size=1, max_size=5))
     def control(sequence):
         for name in sequence:
             assert fuzzers[name].call().error is None
