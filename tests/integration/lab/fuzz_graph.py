@@ -1,5 +1,6 @@
 """The fuzzed graph of the course's service servers (test_fuzz_services.py, test_fuzz_approach.py): one tb3_sim in
-the approach arena at REAL_TIME_FACTOR with the Week 4 servers, and whichever other servers a module fuzzes.
+the approach arena at REAL_TIME_FACTOR, with the Week 4 servers (WEEK4_DEMO) or the simulator alone (APPROACH_ARENA),
+and whichever other servers a module fuzzes.
 
 The fuzz runs at REAL_TIME_FACTOR; a module's last check, that a server still does a valid motion right, is
 judged on where the robot stopped, at JUDGING_FACTOR (Graph.paced). A stop that comes late by some wall time
@@ -8,6 +9,7 @@ when the fuzz ran at 10x, was 0.43 s of sim time there, beyond the checks' 0.3-0
 would be 0.22 s, with little margin left; at 2x it is 0.09 s. Gazebo itself runs the course at 1x, so the checks
 stay stricter than the course's own setup."""
 import contextlib
+from typing import Dict, NamedTuple, Tuple
 
 import rospy
 from gazebo_msgs.srv import GetPhysicsProperties, GetWorldProperties, SetPhysicsProperties
@@ -28,26 +30,44 @@ JUDGING_FACTOR = 2
 MAX_LINEAR_MPS = 0.26
 # (package, executable, node, service, extra arguments)
 STOP_SERVER = ("course_sim_services", "moving_stop_services.py", "/moving_stop_services", "/stop", ())
-WEEK4 = {"/gazebo": "/gazebo/reset_world", "/move_service_server": "/move_service",
-         "/timed_move_service_server": "/timed_move_service", "/approach_service_server": "/approach_service"}
+APPROACH_SERVER = ("week4_services", "approach_server.py", "/approach_service_server", "/approach_service", ())
+
+
+class Launch(NamedTuple):
+    """`roslaunch package launch_file *args` and the {node: service} it starts."""
+
+    package: str
+    launch_file: str
+    args: Tuple[str, ...]
+    services: Dict[str, str]
+
+
+SIMULATOR = {"/gazebo": "/gazebo/reset_world"}
+# week4_demo.launch: the simulator in the approach arena and the three Week 4 servers.
+WEEK4_DEMO = Launch("week4_services", "week4_demo.launch", (), dict(
+    SIMULATOR, **{"/move_service_server": "/move_service", "/timed_move_service_server": "/timed_move_service",
+                  "/approach_service_server": "/approach_service"}))
+# The same simulator and world without the Week 4 servers, for a module that fuzzes one of them (by rosrun): each
+# idle rospy node on /use_sim_time takes 5 % of a core at REAL_TIME_FACTOR receiving /clock.
+APPROACH_ARENA = Launch("tb3_sim", "tb3_sim.launch", ("world:=approach_arena",), SIMULATOR)
 
 
 class Graph:
-    """tb3_sim and the Week 4 servers (week4_demo.launch), the course's /moving and /stop (needed to reset the
-    robot) and `servers` by rosrun, a RobotView."""
+    """tb3_sim from `launch` (with the Week 4 servers by default), the course's /moving and /stop (needed to reset
+    the robot) and `servers` by rosrun, a RobotView."""
 
-    def __init__(self, ros_master, servers=()):
+    def __init__(self, ros_master, servers=(), launch=WEEK4_DEMO):
         servers = [STOP_SERVER, *servers]
-        processes = [ros_master.roslaunch("week4_services", "week4_demo.launch", "gui:=false",
-                                        "real_time_factor:={}".format(REAL_TIME_FACTOR), *CHEAP_CAMERA)]
+        processes = [ros_master.roslaunch(launch.package, launch.launch_file, *launch.args, "gui:=false",
+                                          "real_time_factor:={}".format(REAL_TIME_FACTOR), *CHEAP_CAMERA)]
         wait_for_param(ros_master.uri, "/use_sim_time")   # before the rosrun servers read it
         processes += [ros_master.rosrun(package, executable, *args) for package, executable, _, _, args in servers]
-        services = list(WEEK4.values()) + [service for *_, service, _ in servers] + ["/moving"]
+        services = list(launch.services.values()) + [service for *_, service, _ in servers] + ["/moving"]
         for service in services:
             wait_for_service(ros_master.uri, service, timeout_s=60)
         wait_for_topic(ros_master.uri, "/scan")
         self.probe = RobotView(ros_master.probe()).probe
-        nodes = list(WEEK4) + [node for _, _, node, _, _ in servers]
+        nodes = list(launch.services) + [node for _, _, node, _, _ in servers]
         self.watch = GraphWatch(ros_master.uri, nodes, services, processes)
 
     def reset(self):
@@ -119,10 +139,10 @@ class Graph:
 
 
 @contextlib.contextmanager
-def running_graph(ros_master, servers=()):
+def running_graph(ros_master, servers=(), launch=WEEK4_DEMO):
     """A Graph for a test module: every node must still be alive when the module is done (the module's master
     ends them all afterwards)."""
-    graph = Graph(ros_master, servers)
+    graph = Graph(ros_master, servers, launch)
     yield graph
     graph.watch.assert_alive()
 

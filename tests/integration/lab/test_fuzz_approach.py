@@ -1,9 +1,9 @@
 """Fuzzing the Week 4 /approach_service (issue 8, item 1) in a graph of its own (fuzz_graph.py: tb3_sim in the
-approach arena at REAL_TIME_FACTOR, the Week 4 servers and the course's /stop; no other server, so no camera
-either): a valid request drives to the box or does not move when already close, any other one is refused with
-"Request failed: <field> ...", and an absurdly slow one gives up at the server's time limit. Valid approaches in
-the fuzz are fast ones from the spawn pose; the slow one has its own test. Afterwards every node is the same process,
-still offers its services and printed no traceback.
+approach arena at REAL_TIME_FACTOR, the approach server and the course's /stop; no other server, so no camera
+either, and not the other two Week 4 servers, which would only take /clock): a valid request drives to the box or
+does not move when already close, any other one is refused with "Request failed: <field> ...", and an absurdly slow
+one gives up at the server's time limit. Valid approaches in the fuzz are fast ones from the spawn pose; the slow
+one has its own test. Afterwards every node is the same process, still offers its services and printed no traceback.
 
 The fuzz's last approach is judged on its stopping distance, at JUDGING_FACTOR: how far a late stop overshoots
 grows with the factor (fuzz_graph.py)."""
@@ -19,7 +19,16 @@ from tuos_msgs.srv import Approach
 from roslab.fuzz import FUZZ_SETTINGS, ServiceFuzzer
 from roslab.fuzz_strategies import float32s
 
-from .fuzz_graph import JUDGING_FACTOR, MAX_LINEAR_MPS, report, reset_around, running_graph, speeds
+from .fuzz_graph import (
+    APPROACH_ARENA,
+    APPROACH_SERVER,
+    JUDGING_FACTOR,
+    MAX_LINEAR_MPS,
+    report,
+    reset_around,
+    running_graph,
+    speeds,
+)
 
 APPROACH_DISTANCES_M = (0.2, 3.5)        # [min, max)
 FAST_APPROACH_MPS = 0.2                  # valid approaches in the fuzz are at least this fast
@@ -29,7 +38,7 @@ APPROACH_TIME_LIMIT_S = 60               # approach_server.py gives up after thi
 
 @pytest.fixture(scope="module")
 def graph(ros_master):
-    with running_graph(ros_master) as graph:
+    with running_graph(ros_master, [APPROACH_SERVER], APPROACH_ARENA) as graph:
         yield graph
 
 

@@ -42,43 +42,47 @@ def start(ros_master, launch_file):
     return launch, probe
 
 
-@pytest.fixture
-def demo(ros_master):
-    launch, probe = start(ros_master, "start_demo.launch")
-    yield ros_master, probe
-    launch.stop()
-    probe.stop()
+class TestStartDemo:
+    """start_demo.launch, started once for the tests that only watch it (none moves a turtle or restarts a node):
+    each start is a roslaunch, the turtlesim replica, two broadcasters, the listener and a probe. The other
+    launch files below run the same node names, so this one ends with the class's last test, before they start."""
 
+    @pytest.fixture(scope="class")
+    @classmethod
+    def demo(cls, ros_master):
+        launch, probe = start(ros_master, "start_demo.launch")
+        yield ros_master, probe
+        launch.stop()
+        probe.stop()
 
-def test_turtle2_catches_turtle1(demo):
-    _, probe = demo
-    assert wait_until_close(probe, lambda turtle1: turtle1, 0.2) < 0.2
+    def test_turtle2_catches_turtle1(self, demo):
+        _, probe = demo
+        assert wait_until_close(probe, lambda turtle1: turtle1, 0.2) < 0.2
 
+    def test_tf_echo_prints_the_transform(self, demo):
+        """tf_echo prints the transform once both broadcasters run; on a loaded machine turtle1's may take more
+        than the few seconds a fixed wait gave it (in one fresh-clone run, over 6 s), so the wait is for the
+        output."""
+        ros_master, _ = demo
+        echo = ros_master.rosrun("tf", "tf_echo", "turtle1", "turtle2")
 
-def test_tf_echo_prints_the_transform(demo):
-    """tf_echo prints the transform once both broadcasters run; on a loaded machine turtle1's may take more than
-    the few seconds a fixed wait gave it (in one fresh-clone run, over 6 s), so the wait is for the output."""
-    ros_master, _ = demo
-    echo = ros_master.rosrun("tf", "tf_echo", "turtle1", "turtle2")
+        def printed():
+            return "At time" in echo.output() and "- Translation:" in echo.output()
+        try:
+            wait_until(lambda: printed() or not echo.running(), ECHO_TIMEOUT_S, "tf_echo to print the transform")
+        except WaitTimeout:
+            pass   # the assertion below shows what tf_echo printed instead
+        echo.stop()
+        assert printed(), echo.output()[-1000:]
 
-    def printed():
-        return "At time" in echo.output() and "- Translation:" in echo.output()
-    try:
-        wait_until(lambda: printed() or not echo.running(), ECHO_TIMEOUT_S, "tf_echo to print the transform")
-    except WaitTimeout:
-        pass   # the assertion below shows what tf_echo printed instead
-    echo.stop()
-    assert printed(), echo.output()[-1000:]
-
-
-def test_view_frames_writes_the_graph(demo, tmp_path):
-    ros_master, _ = demo
-    result = subprocess.run(["rosrun", "tf2_tools", "view_frames.py"], env=ros_master.env, cwd=tmp_path,
-                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
-    assert result.returncode == 0, result.stdout
-    graph = (tmp_path / "frames.gv").read_text()
-    assert '"world" -> "turtle1"' in graph and '"world" -> "turtle2"' in graph
-    assert (tmp_path / "frames.pdf").stat().st_size > 0
+    def test_view_frames_writes_the_graph(self, demo, tmp_path):
+        ros_master, _ = demo
+        result = subprocess.run(["rosrun", "tf2_tools", "view_frames.py"], env=ros_master.env, cwd=tmp_path,
+                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
+        assert result.returncode == 0, result.stdout
+        graph = (tmp_path / "frames.gv").read_text()
+        assert '"world" -> "turtle1"' in graph and '"world" -> "turtle2"' in graph
+        assert (tmp_path / "frames.pdf").stat().st_size > 0
 
 
 def test_turtle2_settles_at_the_fixed_carrot(ros_master):
