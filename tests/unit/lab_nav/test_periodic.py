@@ -56,3 +56,13 @@ def test_without_tasks_nothing_is_due_and_a_period_must_be_positive():
     assert tasks.next_due() == math.inf
     with pytest.raises(ValueError, match="period above 0 s, got 0"):
         tasks.add(0, lambda: None)
+
+
+def test_a_task_due_a_rounding_error_after_the_clock_runs_now():
+    """0.2 + 0.1 is 0.30000000000000004: at a clock of 0.3 the task is due, not 4e-17 s later (a loop that slept
+    that long woke at once and spun until the next clock message)."""
+    tasks, log = PeriodicTasks(), []
+    _recorder(tasks, 0.1, "control", log)
+    for now in (0.0, 0.1, 0.2, 0.3):
+        tasks.run_due(now)
+    assert len(log) == 4

@@ -86,9 +86,9 @@ class MoveBaseNode:
         rospy.Service("~make_plan", GetPlan, self._on_make_plan)
         rospy.Service("~NavfnROS/make_plan", GetPlan, self._on_navfn_make_plan)
         rospy.Service("~clear_costmaps", Empty, self._on_clear_costmaps)
+        self._tasks.add(1.0 / self.params.controller_frequency, self._control_tick)   # first: see _control_tick
         for costmap in (self.global_costmap, self.local_costmap):
             costmap.schedule(self._tasks)
-        self._tasks.add(1.0 / self.params.controller_frequency, self._control_tick)
         threading.Thread(target=self._run_periodic, name="move_base_periodic", daemon=True).start()
         self.server.start()
         return True
@@ -110,6 +110,9 @@ class MoveBaseNode:
                 rospy.logerr("move_base periodic task failed: %s", error)
 
     def _control_tick(self):
+        """Wake the goal thread for a control cycle. It runs before the costmaps' updates, so the cycle computes
+        while this thread updates (the local costmap's lock orders the two), as move_base's controller thread does
+        beside its costmap threads: after them, a slow global update (a map-wide change) delayed the command."""
         with self._tick:
             self._ticks += 1
             self._tick.notify_all()

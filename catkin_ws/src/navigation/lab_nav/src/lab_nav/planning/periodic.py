@@ -12,6 +12,11 @@ from the new time. Times are seconds of whatever clock the caller passes in (sim
 """
 import math
 
+DUE_TOLERANCE_S = 1e-6
+"""A task is due this close before its time. Sums of periods in float seconds land a few 1e-15 s past a clock
+stamp (the simulator's /clock steps 0.01 s), and a sleep that short ends at once: without the tolerance the loop
+spun until the next /clock message, most of a core at real time."""
+
 
 class PeriodicTasks:
     """Callables run at fixed periods by `run_due(now)`; `next_due()` says when to call it again."""
@@ -34,7 +39,7 @@ class PeriodicTasks:
         self._last_now = now
         for entry in self._tasks:
             period, due, task = entry
-            if due is not None and now < due:
+            if due is not None and now < due - DUE_TOLERANCE_S:
                 continue
             entry[1] = now + period if due is None or now - due >= period else due + period
             task()
