@@ -63,7 +63,7 @@ class CostmapRos:
     # --- start-up -----------------------------------------------------------------------------------------
     def start(self):
         """Wait for TF robot -> global frame, then (static layer) for the first map; start the layers' inputs
-        and the update timer. False when ROS shut down while waiting."""
+        and make the first update. False when ROS shut down while waiting."""
         c = self.config
         while not rospy.is_shutdown():
             try:
@@ -83,11 +83,16 @@ class CostmapRos:
             rospy.Subscriber(source.topic, LaserScan, self._on_scan, callback_args=source, queue_size=1)
             rospy.loginfo("    Subscribed to Topics: %s", source.topic)
         self.update()
-        if c.update_frequency > 0:
-            rospy.Timer(rospy.Duration(1.0 / c.update_frequency), lambda _e: self.update())
-        if c.publish_frequency > 0:
-            rospy.Timer(rospy.Duration(1.0 / c.publish_frequency), lambda _e: self.publish())
         return not rospy.is_shutdown()
+
+    def schedule(self, tasks):
+        """Add the update (update_frequency) and publishing (publish_frequency; none at 0) to `tasks`, a
+        lab_nav PeriodicTasks that move_base runs in sim time from one thread."""
+        c = self.config
+        if c.update_frequency > 0:
+            tasks.add(1.0 / c.update_frequency, self.update)
+        if c.publish_frequency > 0:
+            tasks.add(1.0 / c.publish_frequency, self.publish)
 
     def _on_map(self, grid):
         try:
