@@ -3,8 +3,8 @@
  *
  * Each arrow is stroked once per heading (HEADINGS of them) on a small canvas; the pixels it covers and their
  * coverage (alpha) are kept. A cloud is then the union of those masks placed at each arrow's whole pixel (the
- * greatest coverage where arrows overlap), written into one ImageData by plain JavaScript and copied onto the
- * canvas as one image. Stroking each arrow as a path made the canvas rasterise 3000 anti-aliased paths on the
+ * greatest coverage where arrows overlap), written into one ImageData (of the rectangle the arrows cover) by plain
+ * JavaScript and copied onto the canvas as one image. Stroking each arrow as a path made the canvas rasterise 3000 anti-aliased paths on the
  * page's main thread: 38-129 ms per cloud (median with the canvas flushed, load 9-10), against 5-16 ms for this in
  * the same minutes (a copy of a small canvas per arrow: 26-113 ms), while state frames waited behind it. The heading
  * is off by 2 degrees at most, the place by half a pixel; inside an arrow the colour is exact.
@@ -18,7 +18,7 @@ export class ArrowCloud {
     this.rgb = rgb;
     this.strokeArrow = strokeArrow;
     this.masks = null;          // {lengthPx, centre, headings: [{offsets, dx, dy, alphas}]}
-    this.picture = null;        // {canvas, image, pixels (Uint32 view of the image), alpha}
+    this.picture = null;        // {canvas, alpha: coverage per pixel, 0 outside the cloud being drawn}
   }
 
   /** Draws the arrows at `poses` (x, y, yaw triples in a Float32Array), each `lengthPx` long, where `toPixel(x, y)`
@@ -26,9 +26,9 @@ export class ArrowCloud {
   draw(ctx, poses, lengthPx, toPixel) {
     const {width, height} = ctx.canvas;
     const {centre, headings} = this.masksFor(lengthPx);
-    const {canvas, image, pixels, alpha} = this.pictureFor(width, height);
-    alpha.fill(0);
+    const {canvas, alpha} = this.pictureFor(width, height);
     const step = HEADINGS / (2 * Math.PI);
+    let [left, top, right, bottom] = [width, height, -1, -1];   // the pixels the arrows cover, at most
     for (let i = 0; i + 2 < poses.length; i += 3) {
       const [fx, fy] = toPixel(poses[i], poses[i + 1]);
       const px = Math.round(fx);
@@ -48,12 +48,32 @@ export class ArrowCloud {
           if (x >= 0 && y >= 0 && x < width && y < height && mask.alphas[k] > alpha[p]) alpha[p] = mask.alphas[k];
         }
       }
+      left = Math.min(left, px - centre);
+      top = Math.min(top, py - centre);
+      right = Math.max(right, px + centre);
+      bottom = Math.max(bottom, py + centre);
     }
+    [left, top, right, bottom] = [Math.max(left, 0), Math.max(top, 0), Math.min(right, width - 1),
+      Math.min(bottom, height - 1)];
+    if (right < left || bottom < top) return;
+    // Only the rectangle the arrows cover is turned into colour and copied (a converged cloud is a few metres).
+    const w = right - left + 1;
+    const h = bottom - top + 1;
+    const picture = canvas.getContext('2d');
+    const image = picture.createImageData(w, h);
+    const pixels = new Uint32Array(image.data.buffer);
     const [r, g, b] = this.rgb;
     const colour = (b << 16) | (g << 8) | r;    // ImageData is R, G, B, A bytes: little-endian words
-    for (let p = 0; p < alpha.length; p++) pixels[p] = alpha[p] ? ((alpha[p] << 24) | colour) >>> 0 : 0;
-    canvas.getContext('2d').putImageData(image, 0, 0);
-    ctx.drawImage(canvas, 0, 0);
+    for (let y = 0; y < h; y++) {
+      const row = (top + y) * width + left;
+      for (let x = 0; x < w; x++) {
+        const a = alpha[row + x];
+        if (a) pixels[y * w + x] = ((a << 24) | colour) >>> 0;
+      }
+      alpha.fill(0, row, row + w);             // clean for the next cloud
+    }
+    picture.putImageData(image, left, top);
+    ctx.drawImage(canvas, left, top, w, h, left, top, w, h);
   }
 
   /** The pixels of the arrow at each heading, as offsets from its tail's pixel, with their coverage. */
@@ -89,14 +109,14 @@ export class ArrowCloud {
     return this.masks;
   }
 
-  /** The picture the cloud is written into, the size of the canvas it is drawn on (offsets follow its width). */
+  /** The picture the cloud is written into and its coverage, the size of the canvas it is drawn on (the masks'
+   *  offsets follow its width). */
   pictureFor(width, height) {
     if (!this.picture || this.picture.canvas.width !== width || this.picture.canvas.height !== height) {
       const canvas = document.createElement('canvas');
       canvas.width = width;
       canvas.height = height;
-      const image = canvas.getContext('2d').createImageData(width, height);
-      this.picture = {canvas, image, pixels: new Uint32Array(image.data.buffer), alpha: new Uint8Array(width * height)};
+      this.picture = {canvas, alpha: new Uint8Array(width * height)};
     }
     if (this.masks.width !== width) {
       for (const mask of this.masks.headings) mask.offsets = Int32Array.from(mask.dx, (x, k) => mask.dy[k] * width + x);
