@@ -117,6 +117,24 @@ def test_the_up_arrow_drives_the_robot_and_releasing_it_stops_it(robot, page):
     assert commands[-1] == 0.0 and max(commands) == pytest.approx(0.8 * 0.26)   # 80 % of the Waffle's top speed
 
 
+def test_sim_time_is_the_odometrys_and_publish_point_is_stamped_in_it_without_following_clock(ros_master, robot,
+                                                                                               page):
+    """The server does not subscribe to /clock (100 messages a second): the page's sim time is the odometry's stamp
+    and the real-time factor tb3_sim's (1x), and what a tool publishes is stamped in sim time, as RViz stamps it."""
+    _, subscriptions, _ = rosgraph.Master("/test", master_uri=ros_master.uri).getSystemState()
+    assert "/lab_web" not in dict(subscriptions).get("/clock", [])
+    assert abs(float(page.driver.find_element(By.ID, "sim-time").text) - robot.probe.now()) < 1.0
+    wait_until(lambda: abs(float(page.driver.find_element(By.ID, "rtf").text.rstrip("x")) - 1.0) <= 0.2, 10,
+               "the page to show tb3_sim's real-time factor, 1x")
+    robot.probe.subscribe("/clicked_point", "geometry_msgs/PointStamped")
+    wait_until(lambda: page.driver.find_element(By.ID, "tool-publish-point").is_displayed(), 10, "Publish Point")
+    page.driver.find_element(By.ID, "tool-publish-point").click()
+    ActionChains(page.driver).move_to_element(page.driver.find_element(By.ID, "world")).click().perform()
+    point = robot.probe.wait_for_message("/clicked_point", 5)
+    assert point["header"]["frame_id"] == "odom"
+    assert abs(point["header"]["stamp"] - robot.probe.now()) < 0.5   # sim time, not the wall's
+
+
 def test_a_click_on_the_floor_spawns_a_box_dragging_moves_it_and_a_right_click_deletes_it(page):
     canvas = page.driver.find_element(By.ID, "world")
     origin = page.script("const r = arguments[0].getBoundingClientRect(); return [r.width / 2, r.height / 2];", canvas)

@@ -17,10 +17,12 @@ PROTOCOL_VERSION = 1
 
 class RosBridge:
     """Create after rospy.init_node; `shutdown()` stops the panels (teleop sends zero once) and the graph thread.
-    `service_timeout_s`: how long a service form call may take before it is abandoned."""
+    `service_timeout_s`: how long a service form call may take before it is abandoned; `use_sim_time`: see
+    lab_web.ros_context.RosContext."""
 
-    def __init__(self, robot_namespace="", service_timeout_s=DEFAULT_SERVICE_TIMEOUT_S, panels=PANELS):
-        self.ros = RosContext(robot_namespace, service_timeout_s)
+    def __init__(self, robot_namespace="", service_timeout_s=DEFAULT_SERVICE_TIMEOUT_S, panels=PANELS,
+                 use_sim_time=False):
+        self.ros = RosContext(robot_namespace, service_timeout_s, use_sim_time)
         self.panels = [panel(self.ros) for panel in panels]
         self._by_name = {panel.name: panel for panel in self.panels}
         self.commands = {kind: spec for kind, (_, spec) in command_registry(panels).items()}

@@ -29,7 +29,9 @@ def static_dir():
 
 
 def main():
-    rospy.init_node("lab_web", disable_signals=True)   # aiohttp handles Ctrl-C and stops the bridge itself
+    # aiohttp handles Ctrl-C and stops the bridge itself; the node's sim time comes from the stamps it receives,
+    # not /clock (lab_web.ros_context.RosContext.now).
+    rospy.init_node("lab_web", disable_signals=True, disable_rostime=True)
     port = rospy.get_param("~port", 8080)
     try:
         if isinstance(port, bool) or not isinstance(port, int) or not 1 <= port <= 65535:
@@ -42,7 +44,8 @@ def main():
     except AccessError as error:
         rospy.logfatal("lab_web: %s", error)
         sys.exit(2)
-    bridge = RosBridge(str(rospy.get_param("~robot_namespace", "")), service_timeout)
+    bridge = RosBridge(str(rospy.get_param("~robot_namespace", "")), service_timeout,
+                       use_sim_time=bool(rospy.get_param("/use_sim_time", False)))
     keep_registered()
     if policy.warning():
         rospy.logwarn(policy.warning())

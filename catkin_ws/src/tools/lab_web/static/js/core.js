@@ -159,23 +159,49 @@ export function isPageKey(event) {
   return !isTypingTarget(event.target) && !event.ctrlKey && !event.altKey && !event.metaKey;
 }
 
+/** The bytes of base64 text, or null when it is not base64. */
+export function base64Bytes(base64) {
+  let text;
+  try {
+    text = atob(base64);
+  } catch (err) {
+    return null;
+  }
+  const bytes = new Uint8Array(text.length);
+  for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i);
+  return bytes;
+}
+
 /** The values of base64 little-endian float32 data (lab_web.packed), or null when it is not whole float32s. */
 export function decodeFloat32(base64) {
-  if (typeof base64 !== 'string') return null;
-  const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
-  return bytes.length % 4 === 0 ? new Float32Array(bytes.buffer) : null;
+  const bytes = typeof base64 === 'string' ? base64Bytes(base64) : null;
+  return bytes && bytes.length % 4 === 0 ? new Float32Array(bytes.buffer) : null;
 }
 
 const decoding = new Map();      // key -> sequence number of the newest image asked for
+const decoded = new Map();       // key -> the newest image delivered
 
-/** Decodes a PNG given as base64 once and calls `done(image)`, unless a newer one under `key` came meanwhile. */
+/** Decodes a PNG given as base64 once and calls `done(image)` with an ImageBitmap, unless a newer one under `key`
+ *  came meanwhile. createImageBitmap decodes off the page's main thread (an Image decodes where a canvas first
+ *  draws it, in the middle of a frame). An image stays valid until the next one under its key is delivered, which
+ *  frees it: decoded pixels live outside the JavaScript heap, where the garbage collector hardly feels them. */
 export function decodePng(key, base64, done) {
   const seq = (decoding.get(key) || 0) + 1;
   decoding.set(key, seq);
-  const image = new Image();
-  image.onload = () => {
-    if (decoding.get(key) === seq) done(image);
-  };
-  image.onerror = () => addMessage(`could not decode the ${key} image`);
-  image.src = `data:image/png;base64,${base64}`;
+  const bytes = typeof base64 === 'string' ? base64Bytes(base64) : null;
+  const failed = () => addMessage(`could not decode the ${key} image`);
+  if (!bytes) {
+    failed();
+    return;
+  }
+  createImageBitmap(new Blob([bytes], {type: 'image/png'})).then((image) => {
+    if (decoding.get(key) !== seq) {
+      image.close();
+      return;
+    }
+    const old = decoded.get(key);
+    decoded.set(key, image);
+    done(image);
+    if (old) old.close();
+  }, failed);
 }

@@ -25,7 +25,8 @@ export const canvas = $('world');
    thread: it redrew about 4 times a second, and state frames waited behind it. Layers join a plane by their z.
    A plane with no odom-frame layer is not redrawn when odom moves in the fixed frame (amcl's corrections). */
 const PLANES = [
-  {name: 'grids', belowZ: 18},        // floor, 1 m grid, scene, map, costmaps: a new grid a few times a second
+  {name: 'grids', belowZ: 16},        // floor, 1 m grid, scene, map: a new map every 2 s while mapping
+  {name: 'costmaps', belowZ: 18},     // move_base's two costmaps: up to 4 new pictures a second, the map not redrawn
   {name: 'particles', belowZ: 19},    // amcl's cloud in the fixed frame: thousands of arrows, when amcl updates
   {name: 'vectors', belowZ: 20},      // plans, amcl pose, goal, frontiers: nav frames, <= 5 a second
   {name: 'live', belowZ: Infinity},   // models, robots, trail, scan, robot, tools: every state frame
@@ -55,8 +56,8 @@ function planeOf(z) {
   return PLANES.find((plane) => z < plane.belowZ);
 }
 
-/** Redraws the plane named `name` ('grids', 'particles', 'vectors' or 'live') at the next animation frame; every
- *  plane when no name is given (what decides which layer draws what changed, as the fixed frame). */
+/** Redraws the plane named `name` ('grids', 'costmaps', 'particles', 'vectors' or 'live') at the next animation
+ *  frame; every plane when no name is given (what decides which layer draws what changed, as the fixed frame). */
 export function redraw(name) {
   for (const plane of PLANES) {
     if (name === undefined || plane.name === name) plane.dirty = true;

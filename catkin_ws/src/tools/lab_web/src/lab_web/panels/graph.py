@@ -2,7 +2,7 @@
 echo of the topic a page selects.
 
 Rates are measured like `rostopic hz` but only on topics someone else already subscribes to, or the selected one,
-so opening the page never makes a lazy sensor (camera, model states) start working."""
+so opening the page never makes a lazy sensor (camera, model states) start working; /clock only while selected."""
 import threading
 
 import rosgraph
@@ -17,6 +17,10 @@ from lab_web.ros_context import BridgeError, now_s
 ECHO_PERIOD_S = 0.2
 HEAVY_TYPES = ("sensor_msgs/Image", "sensor_msgs/CompressedImage", "sensor_msgs/PointCloud2")
 """Never subscribed just to measure a rate: megabytes per message."""
+UNMEASURED_TOPICS = ("/clock",)
+"""Never subscribed just to measure a rate either: every node on /use_sim_time subscribes to /clock, so it would
+always be measured, at 100 messages a second at real time (the largest single cost of the server's CPU with
+navigation shown, 2.2 % of a core; the top bar shows the real-time factor). Its rate shows while it is echoed."""
 
 
 class GraphPanel(Panel):
@@ -67,7 +71,7 @@ class GraphPanel(Panel):
         me = rospy.get_name()
         counted = self.ros.counted()
         watched = {topic for topic, kind in topic_types.items()
-                   if kind not in HEAVY_TYPES and topic not in counted
+                   if kind not in HEAVY_TYPES and topic not in UNMEASURED_TOPICS and topic not in counted
                    and any(node != me for node in subscribers.get(topic, []))}
         for topic in set(self._rate_subscribers) - watched:
             self._rate_subscribers.pop(topic).unregister()

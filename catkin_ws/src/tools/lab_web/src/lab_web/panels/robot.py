@@ -1,6 +1,8 @@
 """The robot panel: the driven robot from <ns>/odom, its trail, and the newest LiDAR sweep from <ns>/scan in the
-world (odom) frame, with the sim time and real-time factor. The LiDAR's fixed offset from the robot's base comes
-from /tf_static and is composed with odom's pose, which saves following /tf at 30 Hz and more."""
+world (odom) frame, with the sim time (the odometry's stamp: the server does not follow /clock, see
+lab_web.ros_context.RosContext.now) and the real-time factor (sim time over wall time between the odometry's
+arrivals). The LiDAR's fixed offset from the robot's base comes from /tf_static and is composed with odom's pose,
+which saves following /tf at 30 Hz and more."""
 import threading
 import time
 
@@ -19,7 +21,8 @@ RTF_WINDOW_S = 1.0
 class RobotPanel(Panel):
     name = "robot"
     FRAMES = {
-        "state": '{"stamp_ms": wall ms when the newest state arrived, "sim_time": s | null, "rtf": float | null, '
+        "state": '{"stamp_ms": wall ms when the newest state arrived, "sim_time": s (the newest odometry\'s stamp) | '
+                 'null (no /use_sim_time), "rtf": float | null, '
                  '"robot": {"x", "y", "yaw", "v", "w"} | null, "trail": {"reset": bool, "points": [[x, y], ...]} '
                  '(reset true: replace the page\'s trail with points; false: append them; a page keeps at most '
                  '3000 points), "scan": base64 of little-endian float32 x, y per world-frame LiDAR hit of the newest '
@@ -35,7 +38,8 @@ class RobotPanel(Panel):
         self._odom = None
         self.scan = Versioned("")   # packed.points_base64 of the newest sweep's hits, sent once per sweep: state
         #                             frames come at 25 a second, sweeps at 5 (2.9 kB of the 3.6 kB of a frame)
-        self._clock_samples = []
+        self._clock_samples = []   # (wall s, sim s) of the odometry over the last RTF_WINDOW_S
+        self._sim_rtf = (None, None)
         self._static_transforms = {}
         self._tf_static = rospy.Subscriber("/tf_static", TFMessage, self._on_tf_static, queue_size=10)
         self._subscribers = []
@@ -92,6 +96,8 @@ class RobotPanel(Panel):
                 return   # the robot followed before a pick: its message was on its way
             self._odom = (robot, odom.twist.twist.linear.x, odom.twist.twist.angular.z, odom.child_frame_id)
             self.trail.add(robot.x, robot.y)
+            self._sim_rtf = self._clock(odom.header.stamp)
+        self.ros.stamped(odom.header.stamp)
         self.ros.count(self._odom_topic)
         self._publish_state()
 
@@ -120,9 +126,12 @@ class RobotPanel(Panel):
                     transform.translation.x, transform.translation.y,
                     scene.yaw_of(transform.rotation.z, transform.rotation.w)))
 
-    def _sim_time_and_rtf(self):
-        """(sim time s or None without /use_sim_time, real-time factor over the last second or None)."""
-        sim = rospy.get_time()
+    def _clock(self, stamp):
+        """(sim time s of the odometry stamped `stamp`, or None without /use_sim_time; real-time factor over the last
+        second of the odometry's arrivals, or None)."""
+        if not self.ros.use_sim_time:
+            return None, None
+        sim = stamp.to_sec()
         wall = now_s()
         samples = self._clock_samples
         if samples and sim < samples[-1][1]:
@@ -130,14 +139,12 @@ class RobotPanel(Panel):
         samples.append((wall, sim))
         while len(samples) > 2 and wall - samples[1][0] >= RTF_WINDOW_S:
             samples.pop(0)
-        if rospy.rostime.is_wallclock():
-            return None, None
         (wall0, sim0) = samples[0]
         rtf = (sim - sim0) / (wall - wall0) if wall - wall0 >= 0.2 else None
         return sim, rtf
 
     def _publish_state(self):
         with self._lock:
-            sim, rtf = self._sim_time_and_rtf()
+            sim, rtf = self._sim_rtf
             robot = scene.robot_state(*self._odom[:3]) if self._odom else None
             self.state.set({"stamp_ms": int(time.time() * 1000), "sim_time": sim, "rtf": rtf, "robot": robot})

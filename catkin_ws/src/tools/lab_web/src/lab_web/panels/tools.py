@@ -9,7 +9,6 @@ lab's publishes an empty actionlib_msgs/GoalID on /move_base/cancel, which cance
 do, so the first drag reaches amcl and move_base (a new publisher's first message is lost)."""
 import math
 
-import rospy
 from actionlib_msgs.msg import GoalID
 from geometry_msgs.msg import PointStamped, PoseStamped, PoseWithCovarianceStamped
 
@@ -60,5 +59,5 @@ class ToolsPanel(Panel):
             message = GoalID()
         if kind != "cancel_goal":
             message.header.frame_id = args["frame"]
-            message.header.stamp = rospy.Time.now()
+            message.header.stamp = self.ros.now()
         self._publishers[kind].publish(message)

@@ -41,8 +41,8 @@ function drawMap(ctx) {
 function mapPng() {
   if (!mapImage) return null;
   const canvas = document.createElement('canvas');
-  canvas.width = mapImage.image.naturalWidth;
-  canvas.height = mapImage.image.naturalHeight;
+  canvas.width = mapImage.image.width;
+  canvas.height = mapImage.image.height;
   canvas.getContext('2d').drawImage(mapImage.image, 0, 0);
   return canvas.toDataURL('image/png');
 }

@@ -7,13 +7,17 @@
  * Each item is drawn in its own frame: the fixed frame as it is, the picked robot's odom through map -> odom; others
  * not at all.
  */
+import {ArrowCloud} from '../arrow_cloud.js';
 import {addMessage, app, decodeFloat32, decodePng, isNumber, labView} from '../core.js';
 import {addLayer, currentView, drawGridImage, redraw, tracePath, worldToPixel} from '../view.js';
 
 const COSTMAP_ALPHA = 0.7;
-const COLORS = {global: '#00b000', local: '#e0c000', particle: 'rgb(255, 25, 0)', amcl: '#4060ff',
+const PARTICLE_RGB = [255, 25, 0];
+const COLORS = {global: '#00b000', local: '#e0c000', particle: `rgb(${PARTICLE_RGB.join(', ')})`, amcl: '#4060ff',
   goal: '#ff00ff'};
 const PARTICLE_LENGTH_M = 0.3;
+const particleCloud = new ArrowCloud(PARTICLE_RGB, (ctx, tail, yaw, lengthPx) => arrow(ctx, [0, 0, yaw], lengthPx,
+  COLORS.particle, 2, tail));
 const costmaps = {};            // name -> {image, frame}
 let nav = null;                 // the items of every nav frame so far, particles' poses as a Float32Array
 
@@ -25,7 +29,7 @@ function onCostmap(frame) {
   decodePng(`${frame.name} costmap`, frame.png, (image) => {
     costmaps[frame.name] = {image, frame};
     labView.costmaps += 1;
-    redraw('grids');
+    redraw('costmaps');
   });
 }
 
@@ -66,10 +70,11 @@ function inLayer(frame, layerFrame) {
   return frame === odomFrame() && layerFrame === 'odom';
 }
 
-/** An arrow as one path (shaft and both sides of its head) stroked once: a third of the strokes of three lines. */
-function arrow(ctx, pose, lengthPx, color, width) {
+/** An arrow as one path (shaft and both sides of its head) stroked once: a third of the strokes of three lines.
+ *  Its tail is where the view puts `pose`, or at canvas pixel `tail` when given. */
+function arrow(ctx, pose, lengthPx, color, width, tail = null) {
   const [x, y, yaw] = pose;
-  const [ax, ay] = worldToPixel(x, y);
+  const [ax, ay] = tail || worldToPixel(x, y);
   const [bx, by] = [ax + lengthPx * Math.cos(yaw), ay - lengthPx * Math.sin(yaw)];
   const head = Math.max(lengthPx * 0.3, 3);
   ctx.lineWidth = width;
@@ -117,12 +122,10 @@ function drawCostmaps(ctx, layerFrame) {
   }
 }
 
-/** amcl's cloud, an arrow per particle. */
+/** amcl's cloud, an arrow per particle (js/arrow_cloud.js: one picture, not thousands of paths). */
 function drawParticles(ctx, layerFrame) {
   if (!nav || !nav.particles || !inLayer(nav.particles.frame, layerFrame)) return;
-  const poses = nav.particles.poses;
-  const lengthPx = PARTICLE_LENGTH_M * currentView().scale;
-  for (let i = 0; i + 2 < poses.length; i += 3) arrow(ctx, [poses[i], poses[i + 1], poses[i + 2]], lengthPx, COLORS.particle, 2);
+  particleCloud.draw(ctx, nav.particles.poses, PARTICLE_LENGTH_M * currentView().scale, worldToPixel);
 }
 
 /** The plans, amcl's pose, the goal and the frontiers: above both costmaps and the particles. */
