@@ -90,15 +90,25 @@ def body_edge_m(angles, footprint=WAFFLE_FOOTPRINT, scan_x=WAFFLE_SCAN_X_M):
 
 
 def closest_clearance_m(scans):
-    """The smallest (reading - body edge) over LaserScan dicts (the probe's): how near anything came to the
-    body; +inf when nothing was seen."""
+    """The smallest clearance (reading - body edge) over LaserScan dicts (the probe's), each beam's averaged with
+    its four nearest neighbours': how near anything came to the body; +inf when nothing was seen.
+
+    Why averaged: every reading carries the LiDAR's own Gaussian noise (0.01 m, independent per beam), and the
+    smallest of the thousands of single readings taken while the robot passes an obstacle lies ~3.5 sigma
+    (0.035 m) below the true distance, so a single beam's minimum calls a pass 0.04 m clear a contact. Five
+    beams 1 deg apart see the same surface within a centimetre at these ranges and cut the noise by sqrt(5), at
+    the cost of reading up to ~4 mm too far where a footprint corner is nearest; beams next to one that saw
+    nothing are left out (anything near the body spans many beams)."""
     clearance = math.inf
     for scan in scans:
         ranges = np.array([float(r) for r in scan["ranges"]])
         angles = scan["angle_min"] + scan["angle_increment"] * np.arange(len(ranges))
+        per_beam = np.full(len(ranges), np.inf)
         seen = np.isfinite(ranges)
-        if seen.any():
-            clearance = min(clearance, float(np.min(ranges[seen] - body_edge_m(angles[seen]))))
+        per_beam[seen] = ranges[seen] - body_edge_m(angles[seen])
+        averaged = sum(np.roll(per_beam, shift) for shift in range(-2, 3)) / 5.0
+        if np.isfinite(averaged).any():
+            clearance = min(clearance, float(np.min(averaged)))
     return clearance
 
 
