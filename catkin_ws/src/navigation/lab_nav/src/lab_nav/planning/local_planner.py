@@ -191,6 +191,18 @@ class DwaPlanner:
         return Command(float(commands[best, 0]), float(commands[best, 1]), trajectories[best])
 
     # --- at the goal --------------------------------------------------------------------------------------
+    def rotate_speed(self, error, w0):
+        """|w| (rad/s) to turn toward a yaw `error` (rad) away from an angular speed w0, as base_local_planner's
+        LatchedStopRotateController: |error| within the limits, within one period's acceleration of |w0|, no
+        faster than stops at the goal yaw (sqrt(2 acc_lim_theta |error|)), and finally within [min_vel_theta,
+        max_vel_theta] again, so from a standstill it turns at min_vel_theta at once (0.9 rad/s for the
+        Waffle: the acceleration window alone, 0.32 rad/s, is below it)."""
+        p = self.params
+        limits = (p.min_vel_theta, p.max_vel_theta)
+        reach = p.acc_lim_theta * p.sim_period
+        speed = np.clip(np.clip(abs(error), *limits), abs(w0) - reach, abs(w0) + reach)
+        return float(np.clip(min(speed, np.sqrt(2 * p.acc_lim_theta * abs(error))), *limits))
+
     def _stop_and_rotate(self, pose, velocity, costmap):
         p, (v0, w0) = self.params, velocity
         dt = p.sim_period
@@ -202,8 +214,7 @@ class DwaPlanner:
             v = float(np.sign(v0) * max(0.0, abs(v0) - p.acc_lim_x * dt))
             w = float(np.sign(w0) * max(0.0, abs(w0) - p.acc_lim_theta * dt))
             return Command(v, w, np.array([pose]))
-        speed = min(p.max_vel_theta, max(p.min_vel_theta, np.sqrt(2 * p.acc_lim_theta * abs(error))))
-        w = float(np.clip(np.sign(error) * speed, w0 - p.acc_lim_theta * dt, w0 + p.acc_lim_theta * dt))
+        w = float(np.sign(error) * self.rotate_speed(error, w0))
         turn = self.simulate(pose, np.array([[0.0, w]]))[0]
         if np.any(self.footprint_costs(turn[None], costmap)[1]):
             return _failed()
