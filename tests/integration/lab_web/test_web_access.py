@@ -1,5 +1,7 @@
 """Who may open the page: anyone on this machine by default; beyond loopback (`_host:=0.0.0.0`) the server warns
-and needs the printed token, for the page and for the WebSocket; another site's page may never use the socket."""
+and needs the printed token, for the page and for the WebSocket; another site's page may never use the socket.
+The tests of the default (loopback) server share one: each asks it something a fresh one would answer the same way,
+and starting one costs 2 CPU s."""
 import asyncio
 import json
 import re
@@ -35,14 +37,20 @@ def raw_status(base, path, host, **headers):
         return int(raw.recv(4096).split(b" ", 2)[1])
 
 
+@pytest.fixture(scope="module")
+def loopback_server(ros_master):
+    """(base URL, process) of one web server with the default settings, for the module's tests."""
+    return start_web_server(ros_master)
+
+
 WEBSOCKET_UPGRADE = {"Upgrade": "websocket", "Connection": "Upgrade", "Sec-WebSocket-Version": "13",
                      "Sec-WebSocket-Key": "dGhlIHNhbXBsZSBub25jZQ=="}
 
 
-def test_a_dns_rebinding_page_is_refused(ros_master):
+def test_a_dns_rebinding_page_is_refused(loopback_server):
     """Host and Origin agree, as they do for a page on a name its attacker re-pointed at 127.0.0.1: refused, for
     the page and the socket; the same requests with this machine's names are served."""
-    base, _ = start_web_server(ros_master)
+    base, _ = loopback_server
     port = base.rsplit(":", 1)[1].strip("/")
     evil = "evil.example:" + port
     assert raw_status(base, "/", evil) == 403
@@ -53,8 +61,8 @@ def test_a_dns_rebinding_page_is_refused(ros_master):
         assert raw_status(base, "/ws", host, Origin="http://" + host, **WEBSOCKET_UPGRADE) == 101
 
 
-def test_on_loopback_the_page_opens_without_a_token(ros_master, browser):
-    base, _ = start_web_server(ros_master)
+def test_on_loopback_the_page_opens_without_a_token(loopback_server, browser):
+    base, _ = loopback_server
     assert http_status(base) == 200
     assert asyncio.run(socket_status(base.replace("http", "ws") + "ws")) == (101, "hello")
     open_page(browser, base)
@@ -74,20 +82,22 @@ def test_beyond_loopback_the_token_is_required(ros_master, browser):
     browser.driver.get(base)
     assert "needs the token" in browser.driver.page_source
     open_page(browser, base + "?token=" + token)
+    process.stop()   # not left to follow a simulator a later test starts
 
 
 @pytest.mark.parametrize("origin", ["http://evil.example", "http://localhost:1"])
-def test_another_sites_page_cannot_open_the_socket(ros_master, origin):
-    base, _ = start_web_server(ros_master)
+def test_another_sites_page_cannot_open_the_socket(loopback_server, origin):
+    base, _ = loopback_server
     assert asyncio.run(socket_status(base.replace("http", "ws") + "ws", Origin=origin)) == (403, None)
 
 
-def test_a_taken_port_is_reported_with_the_argument_that_changes_it(ros_master):
-    base, _ = start_web_server(ros_master)
+def test_a_taken_port_is_reported_with_the_argument_that_changes_it(ros_master, loopback_server):
+    base, first = loopback_server
     port = base.rsplit(":", 1)[1].strip("/")
     second = ros_master.rosrun("lab_web", "web_server", "__name:=lab_web_2", "_port:=" + port)
     assert second.popen.wait(timeout=30) == 1
     assert "Choose another with port:=<number>" in second.output()
+    assert first.running() and http_status(base) == 200
 
 
 def test_tb3_sim_launch_serves_the_page_with_web_true(ros_master, browser):

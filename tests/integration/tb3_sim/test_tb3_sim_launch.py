@@ -1,6 +1,8 @@
 """The course's launch commands start tb3_sim: `roslaunch turtlebot3_gazebo turtlebot3_empty_world.launch` and
 turtlebot3_world.launch (model named from TURTLEBOT3_MODEL, spawn pose defaults), the tb3_* aliases, and
-`real_time_factor` pacing. One simulator at a time on this module's master (each test ends its own)."""
+`real_time_factor` pacing. One simulator at a time on this module's master (each test ends its own); the robot of
+the empty world and of the world with the original args is also driven, so that no simulator is started only for
+that."""
 import subprocess
 import time
 from pathlib import Path
@@ -25,7 +27,21 @@ def model_names():
     return rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)().model_names
 
 
-def test_empty_world_launch_without_turtlebot3_model_set_or_a_display(launch):
+def assert_the_robot_answers_cmd_vel_with_odom_and_scan(probe):
+    """A 360-beam /scan, and /odom moving 0.1 m forward under 0.2 m/s on /cmd_vel (messages of an earlier
+    simulator dropped first)."""
+    probe.subscribe("/odom", "nav_msgs/Odometry")
+    probe.subscribe("/scan", "sensor_msgs/LaserScan")
+    probe.take("/odom")
+    probe.take("/scan")
+    x0 = probe.wait_for_message("/odom")["pose"]["pose"]["position"]["x"]
+    assert len(probe.wait_for_message("/scan")["ranges"]) == 360
+    probe.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.2}})
+    probe.wait_for_message("/odom", predicate=lambda m: m["pose"]["pose"]["position"]["x"] > x0 + 0.1)
+    probe.publish("/cmd_vel", "geometry_msgs/Twist", {})
+
+
+def test_empty_world_launch_without_turtlebot3_model_set_or_a_display(launch, probe):
     """Where the course's Gazebo window would open, one line says how to see the world here."""
     process = launch("turtlebot3_gazebo", "turtlebot3_empty_world.launch",
                      unset=("TURTLEBOT3_MODEL", "DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"))
@@ -33,6 +49,7 @@ def test_empty_world_launch_without_turtlebot3_model_set_or_a_display(launch):
     assert robot_position("turtlebot3_waffle") == pytest.approx((0.0, 0.0))
     hint = "[tb3_sim] no display, so the simulator's window (Gazebo's gzclient in the course) is not started. See it"
     assert process.output().count(hint) == 1 and "lab_web web.launch" in process.output()
+    assert_the_robot_answers_cmd_vel_with_odom_and_scan(probe)
 
 
 def test_world_launch_spawns_at_the_original_defaults_named_after_the_model(launch):
@@ -41,22 +58,11 @@ def test_world_launch_spawns_at_the_original_defaults_named_after_the_model(laun
     assert robot_position("turtlebot3_burger") == pytest.approx((-2.0, -0.5))
 
 
-def test_world_launch_takes_the_original_args(launch):
+def test_world_launch_takes_the_original_args(launch, probe):
     launch("turtlebot3_gazebo", "turtlebot3_world.launch", "model:=waffle", "x_pos:=-1.5", "y_pos:=0.5",
            "z_pos:=0.3")
     assert robot_position("turtlebot3_waffle") == pytest.approx((-1.5, 0.5))
-
-
-@pytest.mark.parametrize("launch_file", ["turtlebot3_empty_world.launch", "turtlebot3_world.launch"])
-def test_the_spawned_robot_answers_cmd_vel_with_odom_and_scan(launch, probe, launch_file):
-    launch("turtlebot3_gazebo", launch_file, "gui:=false", "real_time_factor:=4", TURTLEBOT3_MODEL="waffle")
-    probe.subscribe("/odom", "nav_msgs/Odometry")
-    probe.subscribe("/scan", "sensor_msgs/LaserScan")
-    x0 = probe.wait_for_message("/odom")["pose"]["pose"]["position"]["x"]
-    assert len(probe.wait_for_message("/scan")["ranges"]) == 360
-    probe.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.2}})
-    probe.wait_for_message("/odom", predicate=lambda m: m["pose"]["pose"]["position"]["x"] > x0 + 0.1)
-    probe.publish("/cmd_vel", "geometry_msgs/Twist", {})
+    assert_the_robot_answers_cmd_vel_with_odom_and_scan(probe)   # 0.1 m towards x, clear of the pillars
 
 
 def test_real_time_factor_5_runs_10_sim_seconds_in_about_2_wall_seconds(launch, ros_master):

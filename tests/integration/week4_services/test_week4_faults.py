@@ -1,5 +1,7 @@
 """Faults under the Week 4 demo: a simulator that dies or is reset mid-request gets a failure reply within 2 s
-instead of a hang; roslaunch respawns it and the servers serve again; a client killed mid-call wedges nothing."""
+instead of a hang; roslaunch respawns it and the servers serve again; a client killed mid-call wedges nothing.
+The tests share one launch: a test that kills the simulator leaves the next one a respawned simulator, and the next
+test starts once the servers serve again on it, as the respawn test proves they do."""
 import os
 import signal
 import time
@@ -18,15 +20,30 @@ from roslab.robot_view import RobotView
 ANSWER_WITHIN_S = 2.0
 
 
-@pytest.fixture
-def week4(ros_master):
-    """The Week 4 demo launch, started afresh for each test since the test kills its simulator."""
+@pytest.fixture(scope="module")
+def week4_launch(ros_master):
+    """The Week 4 demo launch for the module's tests, with the simulator's pid (a list: the respawned one's later)."""
     launch = ros_master.roslaunch("week4_services", "week4_demo.launch", "gui:=false", "real_time_factor:=1")
     for name in ["/approach_service", "/timed_move_service"]:
         wait_for_service(ros_master.uri, name, timeout_s=60)
     wait_for_topic(ros_master.uri, "/odom")
-    yield ros_master
+    yield [node_pid(ros_master.uri, "/gazebo")]
     launch.stop()
+
+
+@pytest.fixture
+def week4(ros_master, week4_launch):
+    """The module's Week 4 demo, its servers serving: after a test that killed the simulator, once a timed move
+    (a 1 s turn in place) succeeds on the respawned one."""
+    simulator_pid = week4_launch
+    if alive_pid(ros_master.uri) == simulator_pid[0]:
+        return ros_master
+    wait_until(lambda: respawned(ros_master.uri, simulator_pid[0]), 30, "roslaunch to respawn the simulator")
+    call = rospy.ServiceProxy("/timed_move_service", TimedMovement)
+    wait_until(lambda: call("left", 1).success, 30, "a successful timed move on the respawned simulator",
+               interval_s=0.5)
+    simulator_pid[0] = node_pid(ros_master.uri, "/gazebo")
+    return ros_master
 
 
 def fault_during(fault, name, srv_type, *args):
@@ -82,11 +99,17 @@ def test_the_respawned_simulator_is_served_again(week4):
                interval_s=0.5)
 
 
-def respawned(master_uri, old_pid):
+def alive_pid(master_uri):
+    """The simulator's pid, or None while it is dead (the master keeps a dead node's URI until it respawns)."""
     try:
-        return node_pid(master_uri, "/gazebo") != old_pid
+        return node_pid(master_uri, "/gazebo")
     except (OSError, rosgraph.MasterError):
-        return False
+        return None
+
+
+def respawned(master_uri, old_pid):
+    """True once /gazebo answers from a process other than `old_pid`."""
+    return alive_pid(master_uri) not in (None, old_pid)
 
 
 def test_a_client_killed_mid_call_does_not_wedge_the_server(week4):
