@@ -23,7 +23,7 @@ from nav_msgs.srv import SetMap, SetMapResponse
 from nav_ros import grids, poses
 from nav_ros.params import ParamError
 from nav_ros.particle_cloud import ParticleCloud
-from nav_ros.sim_clock import PeriodicThread
+from nav_ros.sim_clock import PeriodicThread, quiet_time_notifications
 from sensor_msgs.msg import LaserScan
 from std_srvs.srv import Empty, EmptyResponse
 
@@ -219,6 +219,7 @@ class AmclNode:
 
 
 def main():
+    quiet_time_notifications()
     rospy.init_node(NODE_NAME)
     try:
         config = read_config(rospy.logwarn)

@@ -29,7 +29,7 @@ from actionlib_msgs.msg import GoalStatus
 from map_msgs.msg import OccupancyGridUpdate
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
 from nav_msgs.msg import OccupancyGrid
-from nav_ros.sim_clock import PeriodicThread
+from nav_ros.sim_clock import PeriodicThread, quiet_time_notifications
 from visualization_msgs.msg import MarkerArray
 
 from explore_lite.markers import frontier_markers
@@ -256,6 +256,7 @@ class Explore:
 
 
 def main():
+    quiet_time_notifications()
     rospy.init_node("explore")
     use_roscpp_console()
     logging.getLogger("rosout." + LOGGER_NAME).setLevel(logging.DEBUG)

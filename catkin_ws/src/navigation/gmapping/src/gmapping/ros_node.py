@@ -22,6 +22,7 @@ import tf2_ros
 from nav_msgs.msg import MapMetaData, OccupancyGrid
 from nav_msgs.srv import GetMap
 from nav_ros.grids import NumpyGetMapResponse, grid_message
+from nav_ros.sim_clock import quiet_time_notifications
 from sensor_msgs.msg import LaserScan
 from std_msgs.msg import Float64
 
@@ -152,6 +153,7 @@ class SlamNode:
 
 def main():
     """Entry point of `rosrun gmapping slam_gmapping`; exits 1 with a one-line reason on bad parameters."""
+    quiet_time_notifications()
     rospy.init_node(NODE_NAME)
     try:
         params = params_from_dict(rospy.get_param("~", {}))

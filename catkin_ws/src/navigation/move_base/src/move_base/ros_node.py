@@ -31,7 +31,7 @@ from nav_msgs.msg import Odometry, Path
 from nav_msgs.srv import GetPlan, GetPlanResponse
 from nav_ros import poses
 from nav_ros.params import ParamError
-from nav_ros.sim_clock import PeriodicThread
+from nav_ros.sim_clock import PeriodicThread, quiet_time_notifications
 from std_srvs.srv import Empty, EmptyResponse
 
 from lab_nav.planning.goal import INVALID_QUATERNION_ABORT, quaternion_problem
@@ -377,6 +377,7 @@ class MoveBaseNode:
 
 
 def main():
+    quiet_time_notifications()
     rospy.init_node(NODE_NAME)
     try:
         node = MoveBaseNode()
