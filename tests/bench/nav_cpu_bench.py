@@ -48,12 +48,12 @@ def main(factor=5, goals=3, standing_sim_s=30):
         costs = nav_goals.global_costs(world_map.GEOMETRY, cells)
         goal_list = nav_goals.random_goals(cells, costs, world_map.GEOMETRY, nav_goals.true_pose()[:2], goals, SEED)
         results = {"standing": measure(master, probe, lambda: probe.sleep_sim(standing_sim_s, 120.0))}
-        reached = []
+        runs = []
         results[f"{goals} goals"] = measure(
-            master, probe, lambda: reached.extend(nav_goals.drive_to(probe, g)["text"] for g in goal_list))
+            master, probe, lambda: runs.extend(nav_goals.drive_to(probe, g) for g in goal_list))
     finally:
         master.shutdown()
-    print(f"factor {factor}; goals: {reached}")
+    print(f"factor {factor}; goals: " + ", ".join(f"{r['text'] or r['status']} in {r['waited']:.1f} s" for r in runs))
     print("| process | " + " | ".join(results) + " |")
     print("| --- |" + " --- |" * len(results))
     for node in NODES:
