@@ -10,7 +10,11 @@ One master, simulator and navigation stack for the module; the simulator runs at
 wait is in sim time.
 """
 import pytest
+import rospy
+from nav_msgs.srv import GetMap
 
+from roslab import wait_until
+from roslab.graph import subscribers
 from roslab.mapping_routes import ROUTES
 from roslab.nav_goals import send_goal, wait_result
 
@@ -31,7 +35,24 @@ def nav(ros_master, tmp_path_factory):
     return part3.start_navigation(ros_master, map_yaml, REAL_TIME_FACTOR, (("/odom", "nav_msgs/Odometry"),))
 
 
+def _map_server_follows_the_clock(master_uri):
+    return "/map_server" in subscribers(master_uri, "/clock")
+
+
 # ---- tests, in the order the robot lives through them
+
+def test_map_server_follows_the_clock_only_while_it_answers(ros_master, nav):
+    """map_server stamps its map once: between calls it does not take /clock's 100 messages a sim second, and a
+    call still logs with the current sim time."""
+    assert not _map_server_follows_the_clock(ros_master.uri)
+    nav.subscribe("/rosout_agg", "rosgraph_msgs/Log")
+    reply = rospy.ServiceProxy("/static_map", GetMap)()
+    assert reply.map.info.width > 0 and reply.map.header.stamp == reply.map.info.map_load_time
+    now = nav.now()
+    line = nav.wait_for_message("/rosout_agg", 10, predicate=lambda msg: msg["msg"] == "Sending map")
+    assert line["name"] == "/map_server" and abs(line["header"]["stamp"] - now) < 1.0
+    wait_until(lambda: not _map_server_follows_the_clock(ros_master.uri), 10, "map_server leaving /clock")
+
 
 def test_a_zero_quaternion_is_aborted_at_once(nav):
     status, text, waited = wait_result(nav, send_goal(nav, 1.0, 0.5, quaternion=(0, 0, 0, 0)), 10)

@@ -193,3 +193,25 @@ def test_cost_at_reads_no_information_anywhere_off_the_grid():
     expected = np.where(inside, costmap.costs[np.clip(rows, 0, 79), np.clip(cols, 0, 79)], NO_INFORMATION)
     np.testing.assert_array_equal(costmap.cost_at(x, y), expected)
     assert costmap.cost_at(1.0, 0.0) == LETHAL
+
+
+def test_footprint_clearing_at_a_repeated_pose_frees_the_same_cells_as_a_fresh_costmap():
+    """The cells of the last pose are reused (a standing robot): marks made again under it are freed again, and a
+    new pose or a rolled grid gives the cells a costmap that never cleared before computes."""
+    geometry = MapGeometry(0.05, 80, 80, -2.0, -2.0)
+    rng = np.random.default_rng(7)
+    marks = rng.uniform(-0.5, 0.5, (200, 2))
+
+    def cleared(costmap, pose):
+        costmap.add_scan((0.0, 0.0), marks, np.ones(len(marks), bool), clear=False)
+        costmap.clear_footprint(*pose)
+        return costmap.update().copy()
+
+    reused = LayeredCostmap(geometry, PARAMS, static=False)
+    for pose in ((0.1, 0.0, 0.3), (0.1, 0.0, 0.3), (0.12, -0.03, 0.9), (0.12, -0.03, 0.9)):
+        np.testing.assert_array_equal(cleared(reused, pose), cleared(LayeredCostmap(geometry, PARAMS, static=False),
+                                                                     pose))
+    reused.move_to(0.37, 0.21)   # the rolling window's origin moves: same pose, other cells
+    fresh = LayeredCostmap(geometry, PARAMS, static=False)
+    fresh.move_to(0.37, 0.21)
+    np.testing.assert_array_equal(cleared(reused, (0.12, -0.03, 0.9)), cleared(fresh, (0.12, -0.03, 0.9)))

@@ -66,3 +66,14 @@ def test_a_task_due_a_rounding_error_after_the_clock_runs_now():
     for now in (0.0, 0.1, 0.2, 0.3):
         tasks.run_due(now)
     assert len(log) == 4
+
+
+def test_a_task_added_to_run_after_its_period_first_runs_a_period_after_the_first_call_as_a_rospy_timer():
+    tasks, log = PeriodicTasks(), []
+    tasks.add(15.0, lambda: log.append("check"), first_after_period=True)
+    _recorder(tasks, 5.0, "update", log)
+    for now in (100.0, 105.0, 110.0, 115.0, 130.0):
+        tasks.run_due(now)
+    assert log == ["update", "update", "update", "check", "update", "check", "update"]
+    tasks.run_due(1.0)   # time went back: the delay starts again
+    assert log[-1] == "update" and tasks.next_due() == pytest.approx(6.0)

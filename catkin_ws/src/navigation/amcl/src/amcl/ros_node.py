@@ -23,10 +23,12 @@ from nav_msgs.srv import SetMap, SetMapResponse
 from nav_ros import grids, poses
 from nav_ros.params import ParamError
 from nav_ros.particle_cloud import ParticleCloud
+from nav_ros.sim_clock import PeriodicThread, quiet_time_notifications
 from sensor_msgs.msg import LaserScan
 from std_srvs.srv import Empty, EmptyResponse
 
 from lab_nav.localization.particle_filter import ParticleFilter
+from lab_nav.planning.periodic import PeriodicTasks
 from stop_request.closed_topic import publish_unless_shut_down
 
 from .config import read_config
@@ -86,7 +88,9 @@ class AmclNode:
         rospy.Service("global_localization", Empty, self._on_global_localization)
         rospy.Service("request_nomotion_update", Empty, self._on_nomotion_update)
         rospy.Service("set_map", SetMap, self._on_set_map)
-        rospy.Timer(rospy.Duration(NO_SCAN_WARN_S), self._check_scans)
+        checks = PeriodicTasks()
+        checks.add(NO_SCAN_WARN_S, self._check_scans, first_after_period=True)
+        PeriodicThread(checks, "amcl_scan_check")
 
     def _on_map_topic(self, grid):
         if self.config.first_map_only and self._filter is not None:
@@ -205,7 +209,7 @@ class AmclNode:
         for key, index in zip(("initial_cov_xx", "initial_cov_yy", "initial_cov_aa"), range(3)):
             rospy.set_param("~" + key, float(estimate.covariance[index, index]))
 
-    def _check_scans(self, _event):
+    def _check_scans(self):
         last = self._last_scan_time
         now = rospy.get_time()
         waited = now - last if last is not None else now - self._started
@@ -215,6 +219,7 @@ class AmclNode:
 
 
 def main():
+    quiet_time_notifications()
     rospy.init_node(NODE_NAME)
     try:
         config = read_config(rospy.logwarn)

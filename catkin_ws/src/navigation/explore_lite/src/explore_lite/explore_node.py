@@ -29,6 +29,7 @@ from actionlib_msgs.msg import GoalStatus
 from map_msgs.msg import OccupancyGridUpdate
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
 from nav_msgs.msg import OccupancyGrid
+from nav_ros.sim_clock import PeriodicThread, quiet_time_notifications
 from visualization_msgs.msg import MarkerArray
 
 from explore_lite.markers import frontier_markers
@@ -37,6 +38,7 @@ from lab_nav.exploration.costmap_codes import apply_update, costmap_codes
 from lab_nav.exploration.explorer import BLACKLISTED, SEND, STOP, Explorer
 from lab_nav.exploration.frontier_search import OUT_OF_BOUNDS, FrontierSearch
 from lab_nav.maps.geometry import MapGeometry
+from lab_nav.planning.periodic import PeriodicTasks
 from roscpp_console.handler import use_roscpp_console
 
 EXIT_BAD_PARAMETER = 1
@@ -179,7 +181,9 @@ class Explore:
             if rospy.is_shutdown():
                 return
         rospy.loginfo("Connected to move_base server")
-        self._timer = rospy.Timer(rospy.Duration(1.0 / params["planner_frequency"]), lambda _event: self.make_plan())
+        planning = PeriodicTasks()
+        planning.add(1.0 / params["planner_frequency"], self.make_plan, first_after_period=True)
+        self._timer = PeriodicThread(planning, "explore_planner")
 
     def make_plan(self):
         with self._plan_lock:
@@ -246,12 +250,13 @@ class Explore:
     def _stop(self):
         self._move_base.cancel_all_goals()
         if self._timer is not None:
-            self._timer.shutdown()
+            self._timer.stop()
             self._timer = None
         rospy.loginfo("Exploration stopped.")
 
 
 def main():
+    quiet_time_notifications()
     rospy.init_node("explore")
     use_roscpp_console()
     logging.getLogger("rosout." + LOGGER_NAME).setLevel(logging.DEBUG)

@@ -22,6 +22,7 @@ import tf2_ros
 from nav_msgs.msg import MapMetaData, OccupancyGrid
 from nav_msgs.srv import GetMap
 from nav_ros.grids import NumpyGetMapResponse, grid_message
+from nav_ros.sim_clock import SimTimeAlarm, quiet_time_notifications
 from sensor_msgs.msg import LaserScan
 from std_msgs.msg import Float64
 
@@ -58,12 +59,14 @@ class SlamNode:
 
     def spin_transform(self):
         """Send map -> odom on every tick of transform_publish_period of sim time until shutdown (0: never), the
-        ticks a late wake-up slept past included (gmapping.transform_ticks)."""
+        ticks a late wake-up slept past included (gmapping.transform_ticks). It sleeps on nav_ros.sim_clock's
+        alarm, woken at each tick (20 a sim second by default) instead of at every /clock message as rospy.sleep."""
         period = self.params.transform_publish_period
         if period <= 0.0:
             rospy.spin()
             return
         ticks = TransformTicks(period)
+        alarm = SimTimeAlarm()
         while not rospy.is_shutdown():
             now = rospy.get_time()
             if now > 0.0:  # 0: no /clock yet
@@ -74,7 +77,7 @@ class SlamNode:
                         correction, self.params.map_frame, self.params.odom_frame,
                         rospy.Time.from_sec(tick + self.params.tf_delay)))
             try:
-                rospy.sleep(ticks.next_s(now) - now)
+                alarm.sleep_until(ticks.next_s(now))
             except rospy.ROSTimeMovedBackwardsException:
                 continue
             except rospy.ROSInterruptException:
@@ -152,6 +155,7 @@ class SlamNode:
 
 def main():
     """Entry point of `rosrun gmapping slam_gmapping`; exits 1 with a one-line reason on bad parameters."""
+    quiet_time_notifications()
     rospy.init_node(NODE_NAME)
     try:
         params = params_from_dict(rospy.get_param("~", {}))

@@ -10,6 +10,10 @@ logging why. ~frame_id (default "map") is the header's frame. The deprecated `ma
 reads ~negate (0), ~occupied_thresh (0.65) and ~free_thresh (0.196) and uses origin 0. Any error in the first map
 logs map_server's own ERROR line and exits 255. Console lines are in roscpp's format, as the C++ original prints
 them.
+
+Under /use_sim_time the node follows /clock only while it needs the time: until the first map is stamped, and
+while it answers a service call (nav_ros.sim_clock.ClockOnDemand; a call then takes the time of one /clock
+message longer). The original keeps receiving /clock, 100 messages a sim second from the simulator, for nothing.
 """
 
 import sys
@@ -19,6 +23,7 @@ import rospy
 from nav_msgs.msg import MapMetaData, OccupancyGrid
 from nav_msgs.srv import GetMap, LoadMap, LoadMapResponse
 from nav_ros.grids import NumpyGetMapResponse, grid_message
+from nav_ros.sim_clock import ClockOnDemand
 from rospy.numpy_msg import numpy_msg
 
 from lab_nav.maps.errors import MapFileError
@@ -58,6 +63,7 @@ class MapServer:
         self._frame_id = frame_id
         self._response = None
         self._services = ()
+        self.clock = ClockOnDemand()
         self._metadata_pub = rospy.Publisher("map_metadata", MapMetaData, queue_size=1, latch=True)
         self._map_pub = rospy.Publisher("map", OccupancyGrid, queue_size=1, latch=True)
 
@@ -79,10 +85,15 @@ class MapServer:
         self._map_pub.publish(message)
 
     def _static_map(self, _request):
-        rospy.loginfo("Sending map")
+        with self.clock.running():
+            rospy.loginfo("Sending map")
         return self._response
 
     def _change_map(self, request):
+        with self.clock.running():
+            return self._load_requested(request)
+
+    def _load_requested(self, request):
         try:
             self.load_yaml(request.map_url)
         except MapFileError as error:
@@ -115,6 +126,7 @@ def main(argv=None):
     try:
         server = MapServer(_private_param("frame_id", "map", str, "a string"))
         server.load_description(_first_description(args))
+        server.clock.pause()
     except MapFileError as error:
         rospy.logerr(str(error))
         return EXIT_SERVER_ERROR

@@ -16,7 +16,8 @@ The periodic work runs in sim time from one thread (lab_nav's PeriodicTasks): bo
 publishing, and the control tick that wakes the action's goal thread for its next cycle. Under /use_sim_time
 every thread sleeping in rospy wakes at each /clock message (100 per sim second) to look at the time; with the
 five timers and rates this replaces, the /clock callback's notify alone took 12 % of move_base's busy samples
-(py-spy --gil at factor 10), 4 % with one sleeper.
+(py-spy --gil at factor 10), 4 % with one sleeper. That thread sleeps on nav_ros.sim_clock's alarm, which wakes it
+only when a task is due (about 20 times a sim second, not 100).
 """
 import threading
 
@@ -30,6 +31,7 @@ from nav_msgs.msg import Odometry, Path
 from nav_msgs.srv import GetPlan, GetPlanResponse
 from nav_ros import poses
 from nav_ros.params import ParamError
+from nav_ros.sim_clock import PeriodicThread, quiet_time_notifications
 from std_srvs.srv import Empty, EmptyResponse
 
 from lab_nav.planning.goal import INVALID_QUATERNION_ABORT, quaternion_problem
@@ -89,25 +91,25 @@ class MoveBaseNode:
         self._tasks.add(1.0 / self.params.controller_frequency, self._control_tick)   # first: see _control_tick
         for costmap in (self.global_costmap, self.local_costmap):
             costmap.schedule(self._tasks)
-        threading.Thread(target=self._run_periodic, name="move_base_periodic", daemon=True).start()
         self.server.start()
+        self._schedule_action_status()
+        PeriodicThread(self._tasks, "move_base_periodic")
         return True
 
     # --- the periodic thread ------------------------------------------------------------------------------
-    def _run_periodic(self):
-        """Run the due tasks, sleep in sim time until the next is due; a failing task is logged, not fatal."""
-        while not rospy.is_shutdown():
-            try:
-                self._tasks.run_due(rospy.get_time())
-                rospy.sleep(max(self._tasks.next_due() - rospy.get_time(), 0.0))
-            except rospy.ROSInterruptException:
-                break
-            except rospy.ROSTimeMovedBackwardsException:
-                continue
-            except Exception as error:   # noqa: BLE001 - one task's bug must not stop the costmaps and control
-                if rospy.is_shutdown():
-                    break
-                rospy.logerr("move_base periodic task failed: %s", error)
+    def _schedule_action_status(self):
+        """Publish the action's status (move_base/status) from the periodic thread instead of actionlib's own
+        rospy.Timer, at the same actionlib_status_frequency (5 Hz) in sim time: that timer's thread, sleeping in
+        rospy, woke at every /clock message. Uses actionlib's ActionServer.status_timer and
+        publish_status_async (actionlib 1.14; the timer exists once the server has started); if a version lacks
+        them its timer is left as it is."""
+        action_server = self.server.action_server
+        timer = getattr(action_server, "status_timer", None)
+        publish = getattr(action_server, "publish_status_async", None)
+        if timer is None or publish is None or not action_server.status_frequency > 0.0:
+            return
+        timer.shutdown()
+        self._tasks.add(1.0 / action_server.status_frequency, lambda: publish(None), first_after_period=True)
 
     def _control_tick(self):
         """Wake the goal thread for a control cycle. It runs before the costmaps' updates, so the cycle computes
@@ -375,6 +377,7 @@ class MoveBaseNode:
 
 
 def main():
+    quiet_time_notifications()
     rospy.init_node(NODE_NAME)
     try:
         node = MoveBaseNode()

@@ -72,6 +72,7 @@ class LayeredCostmap:
         self.version = 0
         self._dirty = _WHOLE
         self._framed = None
+        self._footprint_cells = None   # ((x, y, yaw, geometry), (cols, rows)) of the last clear_footprint
 
     def _touched(self, box):
         """Record that the layers may have changed in `box` (a cell_box; _WHOLE for the whole grid)."""
@@ -139,16 +140,26 @@ class LayeredCostmap:
         and those its outline passes through (costmap_2d fills the polygon's rasterised outline and interior).
         Without the outline's cells a laser mark on a cell the outline crosses, but whose centre lies just
         outside, stayed lethal under a robot touching an obstacle, so every trajectory from there collided and
-        the robot stood pressed against a pillar through every later goal."""
+        the robot stood pressed against a pillar through every later goal.
+
+        The cells of the last pose are kept: a standing robot's pose repeats exactly at every update, and finding
+        the cells was a third of a standing move_base's costmap updates (py-spy)."""
+        key = (x, y, yaw, self.geometry)
+        if self._footprint_cells is None or self._footprint_cells[0] != key:
+            self._footprint_cells = (key, self._footprint_cells_at(x, y, yaw))
+        cols, rows = self._footprint_cells[1]
+        self._obstacles[rows, cols] = FREE
+        self._touched(cell_box.of_cells(rows, cols))
+
+    def _footprint_cells_at(self, x, y, yaw):
+        """(cols, rows) of the cells clear_footprint frees at (x, y, yaw)."""
         footprint = self.params.footprint
         inside_cols, inside_rows = self.cells_inside(footprint.placed(x, y, yaw))
         outline = footprint.placed(x, y, yaw, footprint.outline(self.geometry.resolution / OUTLINE_SAMPLES_PER_CELL))
         outline_cols, outline_rows = self.geometry.world_to_cell(outline[:, 0], outline[:, 1])
         on_grid = self.geometry.contains(outline_cols, outline_rows)
-        cols = np.concatenate((inside_cols, outline_cols[on_grid]))
-        rows = np.concatenate((inside_rows, outline_rows[on_grid]))
-        self._obstacles[rows, cols] = FREE
-        self._touched(cell_box.of_cells(rows, cols))
+        return (np.concatenate((inside_cols, outline_cols[on_grid])),
+                np.concatenate((inside_rows, outline_rows[on_grid])))
 
     def cells_inside(self, polygon):
         """(cols, rows) of the in-grid cells whose centres lie inside a convex polygon (K, 2) in m."""

@@ -22,14 +22,15 @@ class PeriodicTasks:
     """Callables run at fixed periods by `run_due(now)`; `next_due()` says when to call it again."""
 
     def __init__(self):
-        self._tasks = []   # [period s, next due s or None (from the first run_due on), callable]
+        self._tasks = []   # [period s, next due s or None (from the first run_due on), callable, first run delayed]
         self._last_now = None
 
-    def add(self, period_s, task):
-        """Run `task()` every `period_s` seconds (> 0), first at the next run_due."""
+    def add(self, period_s, task, first_after_period=False):
+        """Run `task()` every `period_s` seconds (> 0), first at the next run_due, or with `first_after_period` a
+        period after it (as a rospy.Timer first fires a period after it was made)."""
         if not period_s > 0.0:
             raise ValueError(f"a periodic task needs a period above 0 s, got {period_s!r}")
-        self._tasks.append([float(period_s), None, task])
+        self._tasks.append([float(period_s), None, task, first_after_period])
 
     def run_due(self, now):
         """Run every task that is due at `now` (in the order they were added) and schedule its next run."""
@@ -38,7 +39,10 @@ class PeriodicTasks:
                 entry[1] = None
         self._last_now = now
         for entry in self._tasks:
-            period, due, task = entry
+            period, due, task, first_after_period = entry
+            if due is None and first_after_period:
+                entry[1] = now + period
+                continue
             if due is not None and now < due - DUE_TOLERANCE_S:
                 continue
             entry[1] = now + period if due is None or now - due >= period else due + period
@@ -46,4 +50,4 @@ class PeriodicTasks:
 
     def next_due(self):
         """The earliest time a task is due (inf without tasks)."""
-        return min((due if due is not None else -math.inf for _, due, _ in self._tasks), default=math.inf)
+        return min((due if due is not None else -math.inf for _, due, _, _ in self._tasks), default=math.inf)
