@@ -23,12 +23,13 @@ from nav_msgs.srv import SetMap, SetMapResponse
 from nav_ros import grids, poses
 from nav_ros.params import ParamError
 from nav_ros.particle_cloud import ParticleCloud
-from nav_ros.sim_clock import PeriodicThread, quiet_time_notifications
+from nav_ros.sim_clock import PeriodicThread
 from sensor_msgs.msg import LaserScan
 from std_srvs.srv import Empty, EmptyResponse
 
 from lab_nav.localization.particle_filter import ParticleFilter
 from lab_nav.planning.periodic import PeriodicTasks
+from sim_clock import quiet_time_notifications
 from stop_request.closed_topic import publish_unless_shut_down
 
 from .config import read_config

@@ -29,7 +29,7 @@ from actionlib_msgs.msg import GoalStatus
 from map_msgs.msg import OccupancyGridUpdate
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
 from nav_msgs.msg import OccupancyGrid
-from nav_ros.sim_clock import PeriodicThread, quiet_time_notifications
+from nav_ros.sim_clock import PeriodicThread
 from visualization_msgs.msg import MarkerArray
 
 from explore_lite.markers import frontier_markers
@@ -40,6 +40,7 @@ from lab_nav.exploration.frontier_search import OUT_OF_BOUNDS, FrontierSearch
 from lab_nav.maps.geometry import MapGeometry
 from lab_nav.planning.periodic import PeriodicTasks
 from roscpp_console.handler import use_roscpp_console
+from sim_clock import quiet_time_notifications
 
 EXIT_BAD_PARAMETER = 1
 TF_CACHE_S = 10.0

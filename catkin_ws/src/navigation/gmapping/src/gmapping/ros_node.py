@@ -22,7 +22,7 @@ import tf2_ros
 from nav_msgs.msg import MapMetaData, OccupancyGrid
 from nav_msgs.srv import GetMap
 from nav_ros.grids import NumpyGetMapResponse, grid_message
-from nav_ros.sim_clock import SimTimeAlarm, quiet_time_notifications
+from nav_ros.sim_clock import SimTimeAlarm
 from sensor_msgs.msg import LaserScan
 from std_msgs.msg import Float64
 
@@ -30,6 +30,7 @@ from gmapping import messages
 from gmapping.transform_ticks import TransformTicks
 from lab_nav.slam import Slam, SlamError, params_from_dict
 from master_reconnect import keep_registered
+from sim_clock import quiet_time_notifications
 
 NODE_NAME = "slam_gmapping"
 TF_WAIT_S = 0.5

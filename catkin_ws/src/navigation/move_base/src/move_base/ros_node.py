@@ -31,7 +31,7 @@ from nav_msgs.msg import Odometry, Path
 from nav_msgs.srv import GetPlan, GetPlanResponse
 from nav_ros import poses
 from nav_ros.params import ParamError
-from nav_ros.sim_clock import PeriodicThread, quiet_time_notifications
+from nav_ros.sim_clock import PeriodicThread
 from std_srvs.srv import Empty, EmptyResponse
 
 from lab_nav.planning.goal import INVALID_QUATERNION_ABORT, quaternion_problem
@@ -39,6 +39,7 @@ from lab_nav.planning.local_planner import DwaPlanner
 from lab_nav.planning.move_base_logic import CLEARING, CONTROLLING, MoveBaseLogic
 from lab_nav.planning.periodic import PeriodicTasks
 from lab_nav.planning.recovery import CLEARABLE_LAYERS, RotateParams, RotateRecovery
+from sim_clock import quiet_time_notifications
 from stop_request.closed_topic import publish_unless_shut_down
 
 from .config import read_costmap, read_dwa, read_move_base

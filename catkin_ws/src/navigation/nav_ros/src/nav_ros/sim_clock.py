@@ -23,25 +23,6 @@ CLOCK_WAIT_S = 1.0
 """Wall seconds ClockOnDemand.running() waits for a /clock message after subscribing again."""
 
 
-class _QuietCondition(threading.Condition):
-    """A threading.Condition whose notifyAll is notify_all, without the DeprecationWarning Python 3.10+ issues."""
-
-    def notifyAll(self):   # noqa: N802 - the deprecated name rospy calls
-        self.notify_all()
-
-
-def quiet_time_notifications():
-    """Make rospy's time updates skip a deprecation warning; call before rospy.init_node.
-
-    rospy wakes its time sleepers with Condition.notifyAll on every /clock message, and since Python 3.10 each call
-    runs warnings.warn, which matches the message against every warning filter only to ignore it: about half of
-    the /clock callback's time (py-spy --gil, move_base and amcl at factor 5). Before init_node no thread waits on
-    rospy's condition (rospy.rostime._rostime_cond), so it is replaced by one whose notifyAll is notify_all;
-    nothing changes when rospy has no such condition."""
-    if type(getattr(rospy.rostime, "_rostime_cond", None)) is threading.Condition:
-        rospy.rostime._rostime_cond = _QuietCondition()
-
-
 class SimTimeAlarm:
     """An Alarm fed from /clock (None under wall time); `sleep_until(t)` sleeps until ROS time t (seconds)."""
 

@@ -1,11 +1,13 @@
-"""rospy's time condition swapped for one that notifies without Python's deprecation warning, before init_node."""
+"""sim_clock.quiet: rospy's time condition swapped, before init_node, for one that notifies without Python's
+deprecation warning."""
 import threading
 import warnings
 
 import pytest
 import rospy
 import rospy.rostime
-from nav_ros.sim_clock import quiet_time_notifications
+
+from sim_clock import quiet_time_notifications
 
 
 @pytest.fixture
