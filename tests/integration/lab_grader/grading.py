@@ -6,9 +6,8 @@ other waited for ten minutes."""
 import json
 import subprocess
 from concurrent.futures import ThreadPoolExecutor
-from functools import partial
 from pathlib import Path
-from typing import Dict, List, NamedTuple, Optional, Sequence
+from typing import Callable, Dict, NamedTuple, Optional, Sequence
 
 from .sample_submissions import make_submission
 
@@ -54,13 +53,13 @@ def grade_class(env, names: Sequence[str], work: Path, suite, rtf=REAL_TIME_FACT
     return GradedClass(out, output, results(out))
 
 
-def grade_classes_at_once(env, *classes: dict) -> List[GradedClass]:
-    """Several grade_class runs started together (each a dict of grade_class's arguments after `env`), each grade
-    command reserving its own sandbox slots as a second grader on the same machine does; returns their
-    GradedClass in the same order. Where a module grades two classes, the second no longer waits for the first:
-    a week4 grading spends most of its wall time waiting on the simulator's clock."""
-    with ThreadPoolExecutor(len(classes)) as pool:
-        runs = [pool.submit(partial(grade_class, env, **arguments)) for arguments in classes]
+def at_once(*lanes: Callable[[], object]) -> list:
+    """Call each of `lanes` in a thread of its own, all started together; returns their answers in the same order.
+    A lane that grades (grade_class, one class or several one after the other) reserves sandbox slots of its own,
+    as a second grader on the same machine does. Where a module grades two classes, the second no longer waits for
+    the first: a week4 grading spends most of its wall time waiting on the simulator's clock."""
+    with ThreadPoolExecutor(len(lanes)) as pool:
+        runs = [pool.submit(lane) for lane in lanes]
         return [run.result() for run in runs]
 
 

@@ -2,12 +2,14 @@
 server that drives for twice the duration fail those checks with the measured evidence, and graded again (same
 suite, same factor) they get the same score and the same verdict for every check.
 
-The two grade runs start together (grading.grade_classes_at_once), each in sandbox slots of its own, as two graders
+The two grade runs start together (grading.at_once), each in sandbox slots of its own, as two graders
 on one machine: the second no longer waits for the first (the module took 187 s graded one after the other, 81 s
 for the first run and 101 s for the second, at load 9-14; 115 s at once, at load 12-14)."""
+from functools import partial
+
 import pytest
 
-from .grading import GRADE_TIMEOUT_S, check, grade_classes_at_once, others_pass, verdicts
+from .grading import GRADE_TIMEOUT_S, at_once, check, grade_class, others_pass, verdicts
 
 pytestmark = pytest.mark.timeout(GRADE_TIMEOUT_S + 60)
 CLASS = ("wrong_direction", "wrong_duration")
@@ -17,8 +19,8 @@ TIMED_MOVES = {"timed_fwd": 2, "timed_back": 2, "timed_left": 3, "timed_right": 
 @pytest.fixture(scope="module")
 def gradings(grader_env, tmp_path_factory):
     """The class graded by two grade runs (GradedClass each)."""
-    return grade_classes_at_once(grader_env, *(dict(names=CLASS, work=tmp_path_factory.mktemp(run), suite="week4")
-                                               for run in ("first", "second")))
+    return at_once(*(partial(grade_class, grader_env, CLASS, tmp_path_factory.mktemp(run), "week4")
+                     for run in ("first", "second")))
 
 
 @pytest.fixture(scope="module")
