@@ -47,6 +47,15 @@ def test_the_reference_passes_every_check_required_and_advice(graded):
     assert result["score"] == result["max_score"] == 100
     assert {check["id"]: check["kind"] for check in result["checks"]} == dict(
         [(check_id, "required") for check_id in REQUIRED] + [(check_id, "advice") for check_id in ADVICE])
+    for name in ("/move_service", "/timed_move_service", "/approach_service"):
+        assert (result["services"][name]["found"], result["services"][name]["found_by"]) == (name, "by name")
+    move = check(result, "move_true")["evidence"]
+    assert move["reply"]["response_signal"] is True
+    assert move["motion"]["forward_m"] == pytest.approx(0.5, abs=0.03)
+    assert move["motion"]["duration_s"] == pytest.approx(5.0, abs=0.3)
+    assert 10 < len(move["trajectory"]) <= 400
+    assert check(result, "approach_stops_at_distance")["evidence"]["front_distance_m"] == pytest.approx(0.4, abs=0.05)
+    assert check(result, "approach_distance_nan")["evidence"]["request"]["approach_distance"] == "nan"
 
 
 @pytest.mark.slow
