@@ -90,8 +90,9 @@ def test_the_course_templates_habits_get_full_marks(graded):
     all_pass(result)
     checks = by_id(result)
     faced = stops_facing(checks["colour_search_every_pillar"])
-    # clockwise from the start: blue first; it stops with the pillar up to 100 px right of its crop's middle
-    assert faced[0][0] == "blue" and all(-12 < bearing < 0 for _, bearing in faced), faced
+    # clockwise from the start: blue first; it stops with the pillar up to 100 px right of its crop's middle, or
+    # just past the middle when its 5 Hz loop's stop comes a frame late under load (+0.8 deg at load 7-15)
+    assert faced[0][0] == "blue" and all(-12 < bearing < 2 for _, bearing in faced), faced
     assert all(stop["still_s"] > 5 for stop in checks["colour_search_every_pillar"]["evidence"]["stops"][:3])
     line = checks["line_mean_distance"]["evidence"]["line"]
     assert line["mean_distance_m"] < 0.08 and line["max_distance_m"] < 0.15, line
