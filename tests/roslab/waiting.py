@@ -1,5 +1,7 @@
 """Waiting with timeouts on the graph of a given master, without being a node (plain master API calls)."""
+import socket
 import time
+import urllib.parse
 
 import rosgraph
 
@@ -37,9 +39,23 @@ def wait_for_service(master_uri, name, timeout_s=20.0):
     return wait_until(lambda: service_uri(master_uri, name), timeout_s, "service " + name)
 
 
-def wait_for_service_gone(master_uri, name, timeout_s=20.0):
-    """Wait until `name` is no longer registered (its server has left the master)."""
-    wait_until(lambda: service_uri(master_uri, name) is None, timeout_s, f"service {name} to leave the master")
+def wait_for_service_gone(master_uri, name, timeout_s=20.0, killed_ok=False):
+    """Wait until `name` is no longer registered (its server has left the master); with `killed_ok`, also once
+    the registered server no longer accepts connections: a node roslaunch had to SIGKILL never unregisters, and
+    its registration outlives it until another node registers the name."""
+    def gone():
+        uri = service_uri(master_uri, name)
+        return uri is None or (killed_ok and not _accepts_connections(uri))
+    wait_until(gone, timeout_s, f"service {name} to leave the master")
+
+
+def _accepts_connections(rosrpc_uri):
+    host, port = urllib.parse.urlparse(rosrpc_uri).netloc.rsplit(":", 1)
+    try:
+        socket.create_connection((host, int(port)), timeout=1.0).close()
+        return True
+    except OSError:
+        return False
 
 
 def wait_for_topic(master_uri, name, timeout_s=20.0):

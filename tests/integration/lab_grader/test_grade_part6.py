@@ -1,5 +1,5 @@
-"""Calibration of suites/part6.yaml: `rosrun lab_grader grade --suite part6` on sample submissions, each a marker's
-verdict stated in its test:
+"""Calibration of suites/part6.yaml: `rosrun lab_grader grade --suite part6` on three sample submissions in one grade
+run (two at a time, the simulator at REAL_TIME_FACTOR), each a marker's verdict stated in its test:
 - the lab's week6_vision (colour_search.py, line_follower.py) scores full marks;
 - a package written in the course template's habits (student_style/part6_course_template: Tb3Move from a tb3.py
   beside the nodes in src/, no catkin_install_python, crops and a centroid band in pixels of the 1920x1080 image,
@@ -7,56 +7,24 @@ verdict stated in its test:
 - a careless package (week6_vision with red's threshold for every colour and a line follower that never steers)
   fails the two colour-search checks, stopping facing red, and the line checks, leaving the line.
 Each grades both runs: the colour search in coloured_pillars, then the line follower on the line_following track
-in a simulator of its own. The reports render with a picture per world.
-
-Three grade runs in two lanes (grading.at_once), each submission in a run of its own, the simulator at
-REAL_TIME_FACTOR: the course template in one lane; in the other the careless package, then the reference. The
-careless package is graded with part6 at a camera of SMALL_CAMERA (careless_suite): its failures do not depend on
-the image's size (a mask of red's threshold, a follower that steers nowhere: week6_vision measures in fractions of
-the image), and 1920x1080 frames were most of its cost (its line run took 110 s of wall time for 60 s of sim time
-beside another, at load 15, the grading being CPU-bound). The two full-marks packages keep part6 itself, and, as in
-one run of the three two at a time, the reference shares the machine with the template's end only: graded
-together from the start (three at once), the reference's colour search stopped 9.7 and 9.8 degrees off a pillar
-in 2 runs of 4 at load 7-15 (its test asserts within 9)."""
+in a simulator of its own. The reports render with a picture per world."""
 import json
-from pathlib import Path
 
 import pytest
-import yaml
 
-from .conftest import LAB_ROOT
-from .grading import GRADE_TIMEOUT_S, at_once, by_id, grade_class
+from .grading import GRADE_TIMEOUT_S, by_id, grade_class
 
 pytestmark = pytest.mark.timeout(GRADE_TIMEOUT_S + 60)
-REFERENCE, TEMPLATE, CARELESS = "part6_reference", "part6_course_template", "part6_careless"
+CLASS = ("part6_reference", "part6_course_template", "part6_careless")
 REAL_TIME_FACTOR = 2   # 1920x1080 frames at 10 per sim second: the simulator and a node each take most of a core
-SMALL_CAMERA = {"camera_width": 480, "camera_height": 270}    # a quarter of the R200's width and height
-SUITE = LAB_ROOT / "catkin_ws" / "src" / "tools" / "lab_grader" / "suites" / "part6.yaml"
 COLOUR_CHECKS = ("colour_search_blue", "colour_search_every_pillar")
 LINE_CHECKS = ("line_progress", "line_mean_distance", "line_never_leaves")
 
 
-def careless_suite(path: Path) -> Path:
-    """suites/part6.yaml with a camera of SMALL_CAMERA in both worlds (each run's simulator_args replace the
-    suite's)."""
-    suite = yaml.safe_load(SUITE.read_text())
-    suite["suite"] = "part6_small_camera"
-    for args in [suite["simulator_args"]] + [run["simulator_args"] for run in suite["runs"] if "simulator_args" in run]:
-        args.update(SMALL_CAMERA)
-    path.write_text(yaml.safe_dump(suite))
-    return path
-
-
 @pytest.fixture(scope="module")
 def graded(grader_env, tmp_path_factory):
-    """(the reference's run's output folder, {student: result} of the three runs)."""
-    suite = careless_suite(tmp_path_factory.mktemp("suite") / "part6_small_camera.yaml")
-
-    def run(name, suite="part6"):
-        return grade_class(grader_env, (name,), tmp_path_factory.mktemp(name), suite, rtf=REAL_TIME_FACTOR, jobs=1)
-
-    template, (careless, reference) = at_once(lambda: run(TEMPLATE), lambda: (run(CARELESS, suite), run(REFERENCE)))
-    return reference.out, dict(template.results, **careless.results, **reference.results)
+    graded_class = grade_class(grader_env, CLASS, tmp_path_factory.mktemp("part6"), "part6", rtf=REAL_TIME_FACTOR)
+    return graded_class.out, graded_class.results
 
 
 def all_pass(result):
@@ -71,7 +39,7 @@ def stops_facing(check):
 
 @pytest.mark.slow
 def test_the_reference_stops_facing_every_pillar_and_follows_the_line(graded):
-    result = graded[1][REFERENCE]
+    result = graded[1]["part6_reference"]
     all_pass(result)
     checks = by_id(result)
     faced = stops_facing(checks["colour_search_every_pillar"])
@@ -86,7 +54,7 @@ def test_the_reference_stops_facing_every_pillar_and_follows_the_line(graded):
 
 @pytest.mark.slow
 def test_the_course_templates_habits_get_full_marks(graded):
-    result = graded[1][TEMPLATE]
+    result = graded[1]["part6_course_template"]
     all_pass(result)
     checks = by_id(result)
     faced = stops_facing(checks["colour_search_every_pillar"])
@@ -103,7 +71,7 @@ def test_the_course_templates_habits_get_full_marks(graded):
 
 @pytest.mark.slow
 def test_a_wrong_colour_and_a_follower_that_never_steers_fail_those_checks(graded):
-    result = graded[1][CARELESS]
+    result = graded[1]["part6_careless"]
     checks = by_id(result)
     for check_id in COLOUR_CHECKS:
         colour = checks[check_id]
@@ -122,6 +90,6 @@ def test_a_wrong_colour_and_a_follower_that_never_steers_fail_those_checks(grade
 @pytest.mark.slow
 def test_the_report_draws_each_world(graded):
     out = graded[0]
-    html = (out / REFERENCE / "report.html").read_text()
+    html = (out / "part6_reference" / "report.html").read_text()
     assert "id='trajectory'" in html and "id='trajectory-2'" in html
     assert "trajectories in tuos_simulations/worlds/line_following.yaml" in html
