@@ -128,8 +128,8 @@ class Mapping:
 
     def close(self):
         self._stop_processes()
-        # killed_ok: once (a whole-suite run, load ~10), tb3_sim ignored Ctrl-C and SIGTERM as the house session ended and
-        # roslaunch killed it, leaving its services registered; the next world's simulator replaces them
+        # killed_ok: once (a whole-suite run, load ~10) tb3_sim ignored Ctrl-C and SIGTERM as the house session
+        # ended and roslaunch killed it, leaving its services registered; the next world's simulator replaces them
         wait_for_service_gone(self.master.uri, "/gazebo/get_model_state", killed_ok=True)
 
 
