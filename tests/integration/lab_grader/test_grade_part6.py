@@ -9,6 +9,7 @@ run (two at a time, the simulator at REAL_TIME_FACTOR), each a marker's verdict 
 Each grades both runs: the colour search in coloured_pillars, then the line follower on the line_following track
 in a simulator of its own. The reports render with a picture per world."""
 import json
+import statistics
 
 import pytest
 
@@ -44,7 +45,10 @@ def test_the_reference_stops_facing_every_pillar_and_follows_the_line(graded):
     checks = by_id(result)
     faced = stops_facing(checks["colour_search_every_pillar"])
     assert {name for name, _ in faced} == {"red", "green", "turquoise", "blue"}
-    assert all(abs(bearing) < 9 for _, bearing in faced), faced      # it centres the pillar in its camera's view
+    # it centres the pillar in its camera's view: typically 2-6 deg off; under load one stop of the four may come a
+    # frame late (-9.0 and -9.5 deg in two whole-suite runs at load ~10), within the suite's 12 deg
+    bearings = [abs(bearing) for _, bearing in faced]
+    assert statistics.median(bearings) < 6 and max(bearings) < 12, faced
     line = checks["line_progress"]["evidence"]["line"]
     assert line["progress_m"] > 3.5 and line["mean_distance_m"] < 0.03 and line["left_after_s"] is None, line
     nodes = {node["exercise"]: node for node in result["nodes"]}
