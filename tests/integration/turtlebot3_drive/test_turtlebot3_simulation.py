@@ -4,9 +4,7 @@ measured from ground truth (/gazebo/model_states) against the world file's geome
 command topic follow the launch args; Ctrl-C stops the robot; a bad topic name ends the launch with one line.
 
 The simulator runs at WANDER_REAL_TIME_FACTOR x real time: the demo times everything in simulated time, so the
-assertions hold at any factor the machine keeps up with (see the wander test for what that means). The tests that
-drive share one world and one probe: a demo's Ctrl-C leaves the robot stopped, and the command-topic test measures
-that the robot stays where it is, wherever that is.
+assertions hold at any factor the machine keeps up with (see the wander test for what that means).
 """
 import math
 
@@ -150,36 +148,18 @@ def test_clearance_at_the_spawn_pose_is_the_gap_to_the_arena_wall(world_shapes):
 # ---- the demo on the simulator
 
 
-def _roslaunch(ros_master, log, *args):
-    return RosProcess(["roslaunch", "--wait", *args], ros_master.env, log)
-
-
 @pytest.fixture
 def launch(ros_master, tmp_path):
-    """Start `roslaunch <args>`; every launch is ended after the test."""
+    """Start `roslaunch <args>`; every launch is ended after the test (the simulator last)."""
     started = []
 
     def start(*args):
-        process = _roslaunch(ros_master, tmp_path / f"launch{len(started)}.log", *args)
+        process = RosProcess(["roslaunch", "--wait", *args], ros_master.env, tmp_path / f"launch{len(started)}.log")
         started.append(process)
         return process
 
     yield start
     for process in reversed(started):
-        process.stop()
-
-
-@pytest.fixture(scope="module")
-def world(ros_master, tmp_path_factory):
-    """turtlebot3_world at WANDER_REAL_TIME_FACTOR, ended after the module's tests."""
-    process = _roslaunch(ros_master, tmp_path_factory.mktemp("world") / "world.log", "turtlebot3_gazebo",
-                         "turtlebot3_world.launch", "gui:=false", "model:=waffle",
-                         f"real_time_factor:={WANDER_REAL_TIME_FACTOR}")
-    try:
-        wait_for_service(ros_master.uri, "/gazebo/get_model_state")
-        wait_for_param(ros_master.uri, "/use_sim_time")
-        yield process
-    finally:
         process.stop()
     wait_until(lambda: not _service_up(ros_master, "/gazebo/get_model_state"), 20, "the simulator to leave the master")
 
@@ -196,6 +176,14 @@ def _service_up(ros_master, name):
         return True
     except rosgraph.MasterError:
         return False
+
+
+def start_world(launch, ros_master, real_time_factor):
+    process = launch("turtlebot3_gazebo", "turtlebot3_world.launch", "gui:=false", "model:=waffle",
+                     f"real_time_factor:={real_time_factor}")
+    wait_for_service(ros_master.uri, "/gazebo/get_model_state")
+    wait_for_param(ros_master.uri, "/use_sim_time")
+    return process
 
 
 def model_state():
@@ -225,8 +213,7 @@ def is_drive_command(entry):
 
 
 @pytest.mark.slow
-def test_the_robot_wanders_for_120_sim_seconds_without_touching_anything(world, launch, ros_master, probe,
-                                                                         world_shapes):
+def test_the_robot_wanders_for_120_sim_seconds_without_touching_anything(launch, ros_master, world_shapes):
     """At 10x real time the run takes about 12 s of wall time plus start-up.
 
     The node decides in simulated time (a Rate of 125 Hz on /clock), but a message still takes a few wall
@@ -236,6 +223,8 @@ def test_the_robot_wanders_for_120_sim_seconds_without_touching_anything(world, 
     timings, but the same kind of run: tens of metres, clear of everything). Unpaced (factor 0: 15-30x on two
     cores with the demo running) the delay reaches tenths of a simulated second and the robot can hit a wall.
     """
+    start_world(launch, ros_master, WANDER_REAL_TIME_FACTOR)
+    probe = ros_master.probe()
     probe.subscribe("/gazebo/model_states", "gazebo_msgs/ModelStates")
     probe.subscribe("/cmd_vel", "geometry_msgs/Twist")
     demo = launch("turtlebot3_gazebo", "turtlebot3_simulation.launch")
@@ -273,7 +262,9 @@ def test_the_robot_wanders_for_120_sim_seconds_without_touching_anything(world, 
     assert len(quadrants) >= MIN_QUADRANTS_VISITED
 
 
-def test_node_name_and_command_topic_follow_the_launch_args(world, launch, ros_master, probe):
+def test_node_name_and_command_topic_follow_the_launch_args(launch, ros_master):
+    start_world(launch, ros_master, 5)
+    probe = ros_master.probe()
     probe.subscribe("/my_cmd_vel", "geometry_msgs/Twist")
     start_x, start_y = model_state()[:2]
     launch("turtlebot3_gazebo", "turtlebot3_simulation.launch", "cmd_vel:=/my_cmd_vel", "name:=robot1")
