@@ -10,9 +10,7 @@ second, not 100. Times are float seconds of that clock; nothing here knows ROS.
 import math
 import threading
 
-DUE_TOLERANCE_S = 1e-6
-"""A deadline counts as reached this close before it (lab_nav.planning.periodic's tolerance): sums of periods in
-float seconds land a few 1e-15 s past a clock stamp, which would otherwise wait a whole further tick."""
+from .planning.periodic import DUE_TOLERANCE_S  # the alarm rings when PeriodicTasks would run the task
 
 
 class TimeMovedBackwards(Exception):
