@@ -40,6 +40,15 @@ def command_as_root(argv):
     return " ".join(["sudo -E rosrun lab_grader grade", *(shlex.quote(arg) for arg in argv)])
 
 
+def faster_than_calibrated(rtf, suite_rtf):
+    """The note printed when --rtf runs the simulator faster than the suite's own factor: the nodes must then
+    process their sensors' messages (a camera's 1920x1080 frames) that much faster, and on a loaded machine a node
+    that falls behind them is judged on what it did (Part 6's calibrated template, graded at 2x beside other work,
+    stopped 11 degrees past the pillars and found three of four)."""
+    return ("grade: note: the simulator at {:g}x, faster than the {:g}x this suite is calibrated at: a node that "
+            "falls behind its sensors on this machine at that speed is judged on what it did".format(rtf, suite_rtf))
+
+
 def parse_args(argv):
     parser = argparse.ArgumentParser(prog="grade", description=__doc__.split("\n\n")[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -111,6 +120,8 @@ def grade_class(args, suite, shard, work_root):
     jobs = min(args.jobs, max(1, len(submissions)))
     print("grade: {} submissions, suite {}, {} at a time{}".format(
         len(submissions), suite.name, jobs, ", shard {}/{}".format(*shard) if shard else ""))
+    if args.rtf is not None and args.rtf > suite.real_time_factor:
+        print(faster_than_calibrated(args.rtf, suite.real_time_factor))
 
     reservations = []
 
