@@ -19,6 +19,13 @@ A second one: the forward point of a reversing trajectory lies behind the robot 
 the heading whatever the direction), so backing away from the plan's direction does not score as aligned with
 it; with turtlebot3's min_vel_x -0.26 a robot facing across its plan otherwise reversed away from the goal while
 the replanned path followed it (18 s in turtlebot3_world).
+A third: the original also scores goal_distance_bias * the distance from the nose to the local goal (or, when that
+is the goal, to a point forward_point_distance beyond it on the line from the robot), its goal_front cost. It is
+left out: at tests/bench/nav_offline_bench.py's goals 4 and 36, which start boxed in between pillars facing away
+from the plan, the robot with it and the original's nose crept back a cycle at a time (the next cycle every
+reversing trajectory hit a pillar, so it stopped, and from a stop one period's acceleration never reaches
+min_vel_theta to turn in place) and drove 7.5 and 6.0 x the shortest path, where it now drives 1.33 and 1.44 x;
+with it and the reversing nose above, 1.63 and 1.55 x.
 Velocities (v, w) with |v| < min_vel_trans and |w| < min_vel_theta are never commanded (dwa's rule).
 
 Within xy_goal_tolerance of the goal it stops (within the acceleration limits) and turns in place toward the
