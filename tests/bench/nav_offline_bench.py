@@ -37,21 +37,20 @@ def run(goals=GOALS, sim_time=DwaParams().sim_time):
     params = DwaParams(sim_time=sim_time)
     print(f"  goal  (x, y, yaw)              path/shortest  /cheapest  reversing  stopped  closest  ({goals} goals, "
           f"sim_time {sim_time} s)", flush=True)
-    start, driven, ratios, cheapest_ratios, reached, closest = START, [], [], [], 0, []
+    start, driven, reached, closest = START, [], 0, []
     wall = time.monotonic()
     for k, goal in enumerate(goal_list, 1):
         run = closed_loop.drive(cells, shapes, costs, start, goal[:3], params)
-        ratio = run.path_m / goal[3]
-        ratios.append(ratio)
-        cheapest_ratios.append(run.path_m / goal[4])
         driven.append(run.path_m)
         reached += run.reached
         closest.append(run.closest_m)
+        ratio = run.path_m / goal[3]
         mark = "!" if ratio > PATH_RATIO else " "
         print(f"  {k:4d}  ({goal[0]:5.2f}, {goal[1]:5.2f}, {goal[2]:5.2f})  {ratio:13.2f}{mark}"
-              f" {cheapest_ratios[-1]:9.2f}  {run.reversing / run.cycles:8.0%}  {run.stopped:7d}  {run.closest_m:6.3f}"
+              f" {run.path_m / goal[4]:9.2f}  {run.reversing / run.cycles:8.0%}  {run.stopped:7d}  {run.closest_m:6.3f}"
               f"{'' if run.reached else '  not reached'}", flush=True)
         start = goal[:3]
+    ratios = [path / goal[3] for path, goal in zip(driven, goal_list)]
     over = [k for k, r in enumerate(ratios, 1) if r > PATH_RATIO]
     print(f"  {reached}/{goals} reached, path/shortest median {statistics.median(ratios):.2f}, worst {max(ratios):.2f},"
           f" over {PATH_RATIO}: {over or 'none'} ({time.monotonic() - wall:.0f} s)", flush=True)
@@ -62,7 +61,8 @@ def run(goals=GOALS, sim_time=DwaParams().sim_time):
         ("offline navfn + DWA: path / shortest grid path, worst", max(ratios), "", PATH_RATIO, "<="),
         ("offline navfn + DWA: path / shortest grid path, all goals together",
          sum(driven) / sum(goal[3] for goal in goal_list), "", PATH_RATIO, "<="),
-        ("offline navfn + DWA: path / navfn's cheapest path, worst", max(cheapest_ratios), "", PATH_RATIO, "<="),
+        ("offline navfn + DWA: path / navfn's cheapest path, worst",
+         max(path / goal[4] for path, goal in zip(driven, goal_list)), "", PATH_RATIO, "<="),
         ("offline navfn + DWA: closest approach of the footprint to a wall", min(closest), "m", 0.02, ">="),
     ]
 
