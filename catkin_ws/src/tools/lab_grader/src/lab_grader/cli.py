@@ -43,8 +43,8 @@ def command_as_root(argv):
 def faster_than_calibrated(rtf, suite_rtf):
     """The note printed when --rtf runs the simulator faster than the suite's own factor: the nodes must then
     process their sensors' messages (a camera's 1920x1080 frames) that much faster, and on a loaded machine a node
-    that falls behind them is judged on what it did (Part 6's calibrated template, graded at 2x beside other work,
-    stopped 11 degrees past the pillars and found three of four)."""
+    that falls behind them is judged on what it did (Part 6's calibration graded at 2x beside other work: the
+    reference stopped 11 degrees past two pillars, the course template found three pillars of four)."""
     return ("grade: note: the simulator at {:g}x, faster than the {:g}x this suite is calibrated at: a node that "
             "falls behind its sensors on this machine at that speed is judged on what it did".format(rtf, suite_rtf))
 
